@@ -1,0 +1,6 @@
+//! # wrc-host-tests — validation of the wrc kernel on the host
+//!
+//! std-only: readers for the shared data (coefficient tables, CONTACT reference outputs, profiles),
+//! the reference solvers (NORM, TANG) and case sets. The validation suites live in `tests/`.
+
+pub mod data;

@@ -1,0 +1,20 @@
+//! # wrc-kernel — wheel–rail rolling contact in bounded time
+//!
+//! `#![no_std]`, no allocator, no `unsafe`. Every loop is bounded by a constant and every iterative
+//! solve reports its iterations and whether it converged. The same code runs in `f64` (host,
+//! Cortex-M7) and `f32` (Cortex-M4F) through the [`Real`] trait; all maths goes through [`math`].
+//!
+//! Units (methods.md §0.1): lengths mm, areas mm², forces N, stresses MPa, angles rad, velocities
+//! mm/s; creepages ξ, η dimensionless, spin φ in rad/mm. Tractions act on body 1 (the wheel).
+#![no_std]
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod error;
+pub mod material;
+pub mod math;
+pub mod real;
+
+pub use error::Error;
+pub use material::Material;
+pub use real::Real;
