@@ -4,3 +4,4 @@
 //! the reference solvers (NORM, TANG) and case sets. The validation suites live in `tests/`.
 
 pub mod data;
+pub mod influence;
