@@ -80,7 +80,7 @@ mod tests {
     #[test]
     fn steel_matches_spec() {
         let m = Material::<f64>::steel();
-        assert!((m.g - 80_429.6875).abs() < 1e-6);
+        assert!((m.g - 80_429.687_5).abs() < 1e-6);
         assert!((m.e_star - 111_707.9).abs() < 0.1);
         let m2 = Material::<f64>::identical(205_900.0, 0.28).unwrap();
         assert!((m2.g - m.g).abs() < 1e-9 && (m2.nu - 0.28).abs() < 1e-15);
