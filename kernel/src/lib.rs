@@ -11,6 +11,8 @@
 #![warn(missing_docs)]
 
 pub mod error;
+pub mod hertz;
+pub mod kalker;
 pub mod material;
 pub mod math;
 pub mod real;
