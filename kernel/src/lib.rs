@@ -14,6 +14,7 @@ pub mod error;
 pub mod material;
 pub mod math;
 pub mod real;
+pub mod wear;
 
 pub use error::Error;
 pub use material::Material;
