@@ -16,6 +16,7 @@ pub mod kalker;
 pub mod material;
 pub mod math;
 pub mod real;
+pub mod wear;
 
 pub use error::Error;
 pub use material::Material;
