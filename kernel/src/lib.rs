@@ -11,10 +11,13 @@
 #![warn(missing_docs)]
 
 pub mod error;
+pub mod fastrip;
+pub mod fastsim;
 pub mod hertz;
 pub mod kalker;
 pub mod material;
 pub mod math;
+pub mod patch;
 pub mod real;
 pub mod wear;
 
