@@ -19,6 +19,7 @@ pub mod material;
 pub mod math;
 pub mod patch;
 pub mod real;
+pub mod stripes;
 pub mod wear;
 
 pub use error::Error;
