@@ -326,10 +326,12 @@ impl<T: Real, const S: usize, const C: usize> StripPatch<T, S, C> {
         let p0 = c::<T>(3.0) * load / (T::TWO * T::PI * a * b);
         let template = Strip::default().with_reference(a, b, mat)?;
         let dy = T::TWO * ext.fy * b / T::from_usize(S);
-        let y0 = -ext.fy * b;
         let mut strips = [template; S];
+        let half_s = T::from_usize(S) * T::HALF;
         for (j, s) in strips.iter_mut().enumerate() {
-            let y = y0 + (T::from_usize(j) + T::HALF) * dy;
+            // y_j = −fy·b + (j + ½)δy, written so that y_{S−1−j} = −y_j exactly in floating point
+            // (mirror-symmetric strips: antisymmetric responses cancel exactly, also in f32).
+            let y = (T::from_usize(j) + T::HALF - half_s) * dy;
             let q = T::ONE - (y / b) * (y / b);
             let root = if q > T::ZERO { math::sqrt(q) } else { T::ZERO };
             s.y = y;
