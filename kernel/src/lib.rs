@@ -11,10 +11,18 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod adapt;
 pub mod error;
+pub mod fastrip;
+pub mod fastsim;
+pub mod hertz;
+pub mod kalker;
 pub mod material;
 pub mod math;
+pub mod patch;
 pub mod real;
+pub mod stripes;
+pub mod wear;
 
 pub use error::Error;
 pub use material::Material;
