@@ -10,6 +10,7 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod adapt;
 pub mod error;
 pub mod fastrip;
 pub mod fastsim;
@@ -19,6 +20,7 @@ pub mod material;
 pub mod math;
 pub mod patch;
 pub mod real;
+pub mod stripes;
 pub mod wear;
 
 pub use error::Error;
