@@ -19,6 +19,7 @@ pub mod kalker;
 pub mod material;
 pub mod math;
 pub mod patch;
+pub mod pipeline;
 pub mod real;
 pub mod stripes;
 pub mod wear;
