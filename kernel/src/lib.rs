@@ -7,6 +7,7 @@
 //! Units (methods.md §0.1): lengths mm, areas mm², forces N, stresses MPa, angles rad, velocities
 //! mm/s; creepages ξ, η dimensionless, spin φ in rad/mm. Tractions act on body 1 (the wheel).
 #![no_std]
+#![cfg_attr(feature = "hw-sqrt", feature(core_float_math))]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
