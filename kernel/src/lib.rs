@@ -20,6 +20,7 @@ pub mod kalker;
 pub mod material;
 pub mod math;
 pub mod patch;
+pub mod pipeline;
 pub mod real;
 pub mod stripes;
 pub mod wear;
