@@ -21,6 +21,10 @@ pub struct Solved {
     pub status: Status,
     /// Kernel time, µs.
     pub time_us: f64,
+    /// Cell size along x and y, mm (plots).
+    pub cell_mm: (f64, f64),
+    /// (y, wear depth µm) per non-empty strip (plots).
+    pub wear_strips: Vec<(f64, f64)>,
 }
 
 /// The Hertz solution of the case (f64 or f32).
@@ -39,7 +43,10 @@ fn hertz_of<T: Real>(args: &SolveArgs, mat: &Material<T>) -> Result<HertzSolutio
         (None, Some([ca, cb]), None, Some(d)) => {
             hertz::from_approach(t(ca), t(cb), t(d), mat).map_err(|e| e.to_string())
         }
-        _ => Err("an elliptic case needs --ellipse A,B or --curvatures A,B and --fn N or --approach MM".into()),
+        _ => Err(
+            "an elliptic case needs --ellipse A,B or --curvatures A,B and --fn N or --approach MM"
+                .into(),
+        ),
     }
 }
 
@@ -51,8 +58,7 @@ pub fn hertz_patch<T: Real, const S: usize, const C: usize>(
     ns: usize,
     nc: usize,
 ) -> Result<StripPatch<T, S, C>, String> {
-    if ns > S || nc > C || ns < wrc_kernel::patch::MIN_STRIPS || nc < wrc_kernel::patch::MIN_CELLS
-    {
+    if ns > S || nc > C || ns < wrc_kernel::patch::MIN_STRIPS || nc < wrc_kernel::patch::MIN_CELLS {
         return Err(format!(
             "grid {ns} strips x {nc} cells outside the supported range {}..={S} x {}..={C}",
             wrc_kernel::patch::MIN_STRIPS,
@@ -141,12 +147,20 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
             }
         }
         .map_err(|e| e.to_string())?;
-        Ok((h, res, sink))
+        Ok((h, res, sink, patch))
     };
     let time_us = median_time_us(|| {
         let _ = run(false);
     });
-    let (h, res, sink) = run(keep_cells)?;
+    let (h, res, sink, patch) = run(keep_cells)?;
+    let wear_strips: Vec<(f64, f64)> = patch
+        .strips
+        .iter()
+        .zip(sink.wear.depth.iter())
+        .filter(|(s, _)| s.a > T::ZERO)
+        .map(|(s, d)| (s.y.to_f64(), d.to_f64() * 1e3))
+        .collect();
+    let cell_mm = (patch.dx.to_f64(), patch.strips[0].dy.to_f64());
     let n = sink.wear.max_depth(S);
     let patch = Patch {
         y_ref_mm: 0.0,
@@ -182,5 +196,7 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
             warnings: vec![],
         },
         time_us,
+        cell_mm,
+        wear_strips,
     })
 }

@@ -3,6 +3,7 @@
 mod args;
 mod doc;
 mod elliptic;
+mod plot;
 mod sink;
 mod timing;
 
@@ -62,6 +63,15 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
     } else {
         return Err("a case needs --ellipse/--curvatures (elliptic) or --wheel/--rail".into());
     };
+    if let Some(dir) = &a.plot {
+        plot::write_all(
+            dir,
+            &solved.cells,
+            solved.cell_mm.0,
+            solved.cell_mm.1,
+            &solved.wear_strips,
+        )?;
+    }
     let doc = Document::new(
         inputs_json(a),
         vec![solved.patch],
@@ -82,7 +92,18 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
 fn print_table(d: &Document) {
     println!(
         "{:>5} {:>9} {:>9} {:>8} {:>10} {:>10} {:>10} {:>12} {:>9} {:>9} {:>6} {:>9}",
-        "patch", "y_ref", "angle", "approach", "Fn", "Fx", "Fy", "Mz", "pmax", "area", "stick", "wear"
+        "patch",
+        "y_ref",
+        "angle",
+        "approach",
+        "Fn",
+        "Fx",
+        "Fy",
+        "Mz",
+        "pmax",
+        "area",
+        "stick",
+        "wear"
     );
     println!(
         "{:>5} {:>9} {:>9} {:>8} {:>10} {:>10} {:>10} {:>12} {:>9} {:>9} {:>6} {:>9}",

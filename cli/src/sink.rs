@@ -8,10 +8,6 @@ use wrc_kernel::Real;
 /// One stored cell for plots (f64 regardless of the kernel precision).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct PlotCell {
-    /// Strip index.
-    pub j: usize,
-    /// Cell index.
-    pub i: usize,
     /// x, mm.
     pub x: f64,
     /// y, mm.
@@ -67,7 +63,7 @@ impl<T: Real, const S: usize> StatsSink<T, S> {
 }
 
 impl<T: Real, const S: usize> CellSink<T> for StatsSink<T, S> {
-    fn cell(&mut self, j: usize, i: usize, o: &CellOut<T>) {
+    fn cell(&mut self, j: usize, _i: usize, o: &CellOut<T>) {
         let slip = wrc_kernel::math::hypot(o.sx, o.sy);
         self.wear
             .add_cell(&self.map, j, o.pn, slip, self.speed, self.dx);
@@ -79,8 +75,6 @@ impl<T: Real, const S: usize> CellSink<T> for StatsSink<T, S> {
         if self.keep {
             let (dz, _) = self.map.cell_depth(o.pn, slip, self.speed, self.dx);
             self.cells.push(PlotCell {
-                j,
-                i,
                 x: o.x.to_f64(),
                 y: o.y.to_f64(),
                 pn: o.pn.to_f64(),
