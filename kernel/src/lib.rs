@@ -11,8 +11,10 @@
 #![warn(missing_docs)]
 
 pub mod error;
+pub mod geometry;
 pub mod material;
 pub mod math;
+pub mod profile;
 pub mod real;
 
 pub use error::Error;
