@@ -136,7 +136,11 @@ fn parse_number(tok: &str, path: &Path, line: usize, what: &str) -> Result<f64, 
         .parse()
         .map_err(|_| line_err(path, line, format!("{what}: '{tok}' is not a number")))?;
     if !v.is_finite() {
-        return Err(line_err(path, line, format!("{what}: '{tok}' is not finite")));
+        return Err(line_err(
+            path,
+            line,
+            format!("{what}: '{tok}' is not finite"),
+        ));
     }
     Ok(v)
 }
@@ -177,7 +181,11 @@ pub fn parse_two_column(
                 header_seen = true;
                 continue;
             }
-            return Err(line_err(path, ln, format!("expected two numbers 'y z', found '{t}'")));
+            return Err(line_err(
+                path,
+                ln,
+                format!("expected two numbers 'y z', found '{t}'"),
+            ));
         }
         if f.len() < 2 {
             return Err(line_err(path, ln, "expected two numbers 'y z', found one"));
@@ -301,7 +309,11 @@ pub fn parse_simpack(text: &str, path: &Path) -> Result<RawProfile, ProfileError
             }
             Sec::Header | Sec::Spline => {
                 let Some((k, v)) = t.split_once('=') else {
-                    return Err(line_err(path, ln, format!("expected 'key = value', found '{t}'")));
+                    return Err(line_err(
+                        path,
+                        ln,
+                        format!("expected 'key = value', found '{t}'"),
+                    ));
                 };
                 let key = k.trim().to_ascii_lowercase();
                 let val = v.trim();
@@ -332,7 +344,11 @@ pub fn parse_simpack(text: &str, path: &Path) -> Result<RawProfile, ProfileError
                 }
             }
             Sec::None => {
-                return Err(line_err(path, ln, format!("unexpected text outside sections: '{t}'")))
+                return Err(line_err(
+                    path,
+                    ln,
+                    format!("unexpected text outside sections: '{t}'"),
+                ))
             }
         }
     }
@@ -347,7 +363,12 @@ pub fn parse_simpack(text: &str, path: &Path) -> Result<RawProfile, ProfileError
     }
     match version {
         Some(1) => {}
-        Some(v) => return Err(file_err(path, format!("version = {v}: only version 1 is known"))),
+        Some(v) => {
+            return Err(file_err(
+                path,
+                format!("version = {v}: only version 1 is known"),
+            ))
+        }
         None => return Err(file_err(path, "header has no version")),
     }
     let kind = kind.ok_or_else(|| file_err(path, "header has no type (0 rail, 1 wheel)"))?;
@@ -362,11 +383,11 @@ pub fn parse_simpack(text: &str, path: &Path) -> Result<RawProfile, ProfileError
         }
     }
     let len_f = get("units.len.f", 1000.0);
-    if !(len_f > 0.0) {
+    if !len_f.is_finite() || len_f <= 0.0 {
         return Err(file_err(path, "units.len.f must be positive"));
     }
     let ang_f = get("units.ang.f", 1.0);
-    if !(ang_f > 0.0) {
+    if !ang_f.is_finite() || ang_f <= 0.0 {
         return Err(file_err(path, "units.ang.f must be positive"));
     }
     let to_mm = 1000.0 / len_f;
@@ -568,8 +589,15 @@ pub struct FineCurve {
 /// Steps 2–5 of the pipeline: orientation, de-duplication, interpolation, smoothing, derivatives.
 pub fn preprocess(raw: &RawProfile, opts: &SmoothOptions) -> Result<FineCurve, ProfileError> {
     let path = raw.source.as_path();
-    if !(opts.fine_step > 0.0) || !opts.wavelength.is_finite() || opts.wavelength < 0.0 {
-        return Err(file_err(path, "smoothing options: fine_step > 0 and wavelength >= 0 required"));
+    if !opts.fine_step.is_finite()
+        || opts.fine_step <= 0.0
+        || !opts.wavelength.is_finite()
+        || opts.wavelength < 0.0
+    {
+        return Err(file_err(
+            path,
+            "smoothing options: fine_step > 0 and wavelength >= 0 required",
+        ));
     }
     let mut pts = raw.points.clone();
     let (first, last) = (pts[0], pts[pts.len() - 1]);
@@ -646,7 +674,11 @@ pub fn preprocess(raw: &RawProfile, opts: &SmoothOptions) -> Result<FineCurve, P
                 k += 1;
             }
             let d = arc[k + 1] - arc[k];
-            let u = if d > 0.0 { ((s - arc[k]) / d).clamp(0.0, 1.0) } else { 0.0 };
+            let u = if d > 0.0 {
+                ((s - arc[k]) / d).clamp(0.0, 1.0)
+            } else {
+                0.0
+            };
             out.push(vals[k] + u * (vals[k + 1] - vals[k]));
         }
         out
@@ -696,7 +728,11 @@ pub fn preprocess(raw: &RawProfile, opts: &SmoothOptions) -> Result<FineCurve, P
         let ddz = (z[b] - 2.0 * z[c] + z[a]) / (h * h);
         angle[i] = dz.atan2(dy);
         let sp = (dy * dy + dz * dz).powf(1.5);
-        curvature[i] = if sp > 0.0 { (dy * ddz - dz * ddy) / sp } else { 0.0 };
+        curvature[i] = if sp > 0.0 {
+            (dy * ddz - dz * ddy) / sp
+        } else {
+            0.0
+        };
     }
     for (i, a) in angle.iter().enumerate() {
         if a.abs() > std::f64::consts::FRAC_PI_2 + 1e-9 {
@@ -730,7 +766,7 @@ pub fn table_from_fine<T: wrc_kernel::Real, const N: usize>(
         Some(ds) => ds,
         None => total / (N as f64 - 1.0),
     };
-    if !(ds > 0.0) {
+    if !ds.is_finite() || ds <= 0.0 {
         return Err(ProfileError::File {
             path: PathBuf::new(),
             cause: "table step ds must be positive".into(),
@@ -796,11 +832,17 @@ pub fn build_table<T: wrc_kernel::Real, const N: usize>(
     })
 }
 
+/// Table type of [`manchester_tables`]: 2048 nodes.
+pub type ManchesterTable<T> = ProfileTable<T, 2048>;
+
+/// (wheel, rail) tables of [`manchester_tables`].
+pub type ManchesterPair<T> = (Box<ManchesterTable<T>>, Box<ManchesterTable<T>>);
+
 /// The shipped Manchester profiles (`shared/data/profiles/`), default preprocessing, capacity
 /// 2048 nodes at ds = 0.1 mm: `(wheel S1002, rail UIC60 pre-canted 1:40)`.
 pub fn manchester_tables<T: wrc_kernel::Real>(
     opts: &SmoothOptions,
-) -> Result<(Box<ProfileTable<T, 2048>>, Box<ProfileTable<T, 2048>>), ProfileError> {
+) -> Result<ManchesterPair<T>, ProfileError> {
     let w = build_table::<T, 2048>(
         &crate::data::shared_file("profiles/MBench_S1002_v3.prw"),
         Some(ProfileKind::Wheel),

@@ -238,7 +238,7 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
     s_hi: T,
     steps: usize,
 ) -> Result<IsoscelesPair<T>, Error> {
-    if steps < 2 || !(s_hi > s_lo) {
+    if steps < 2 || !math::is_finite(s_hi - s_lo) || s_hi <= s_lo {
         return Err(Error::OutOfRange("isosceles search range"));
     }
     let fr = FrameS::new(geom, frame);
@@ -270,9 +270,7 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
         let s = s_lo + T::from_usize(i) * ds;
         let p = ctx.pair_at(prev.t_rail, prev.t_wheel, s);
         let (fa, fb) = (prev.theta_c - half_pi, p.theta_c - half_pi);
-        if prev.separation < T::ZERO
-            && p.separation < T::ZERO
-            && (fa <= T::ZERO) != (fb <= T::ZERO)
+        if prev.separation < T::ZERO && p.separation < T::ZERO && (fa <= T::ZERO) != (fb <= T::ZERO)
         {
             // bisection on s
             let (mut a, mut b) = (prev, p);

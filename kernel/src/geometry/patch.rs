@@ -384,7 +384,9 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
         return Err(Error::OutOfRange("samples"));
     }
     if !(opts.d_comb >= T::ZERO && opts.d_sep >= opts.d_comb && opts.d_turn > opts.d_sep) {
-        return Err(Error::OutOfRange("patch distances: need 0 <= d_comb <= d_sep < d_turn"));
+        return Err(Error::OutOfRange(
+            "patch distances: need 0 <= d_comb <= d_sep < d_turn",
+        ));
     }
     if dv <= T::ZERO {
         return Err(Error::NoContact);
@@ -526,7 +528,11 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
             num += c * acc[m].w * acc[m].angle;
             den += c * acc[m].w;
         }
-        turned[k] = if den > T::ZERO { num / den } else { acc[k].angle };
+        turned[k] = if den > T::ZERO {
+            num / den
+        } else {
+            acc[k].angle
+        };
     }
     // 5: frames and samples
     for k in 0..np {
@@ -546,7 +552,15 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
         let m = math::max(opts.margin * w, opts.min_margin);
         let s_lo = p.frame.overlap_s[0] - m;
         let s_hi = p.frame.overlap_s[1] + m;
-        sample_patch(geom, &mut p.frame, s_lo, s_hi, opts.samples, opts.correspondence, &mut p.samples)?;
+        sample_patch(
+            geom,
+            &mut p.frame,
+            s_lo,
+            s_hi,
+            opts.samples,
+            opts.correspondence,
+            &mut p.samples,
+        )?;
         out.len = k + 1;
     }
     Ok(())
@@ -641,8 +655,11 @@ pub(crate) fn solve_s<T: Real, F: Fn(T) -> (T, T)>(
     // s increases along the curve when σ = +1 (tangent roughly along +y), decreases when σ = −1
     let dir_up = fr.sigma > T::ZERO;
     let last = len - 1;
-    let mut k = (T::to_f64(math::clamp(math::floor(t_hint), T::ZERO, T::from_usize(last - 1)))
-        as usize)
+    let mut k = (T::to_f64(math::clamp(
+        math::floor(t_hint),
+        T::ZERO,
+        T::from_usize(last - 1),
+    )) as usize)
         .min(last - 1);
     let mut fa = f(T::from_usize(k));
     let mut fb = f(T::from_usize(k + 1));
@@ -690,7 +707,7 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     if n < 4 || n > S {
         return Err(Error::OutOfRange("samples"));
     }
-    if !(s_hi > s_lo) || !math::is_finite(s_hi - s_lo) {
+    if !math::is_finite(s_hi - s_lo) || s_hi <= s_lo {
         return Err(Error::OutOfRange("sample range"));
     }
     let fr = FrameS::new(geom, frame);

@@ -436,7 +436,13 @@ fn solve_forward<T: Real, F: Fn(T) -> T>(
         return None;
     }
     let tk = T::from_usize(*k);
-    let u = illinois(|u| f(tk + u) - target, fk.0 - target, fk.1 - target, 40, tol);
+    let u = illinois(
+        |u| f(tk + u) - target,
+        fk.0 - target,
+        fk.1 - target,
+        40,
+        tol,
+    );
     Some(tk + u)
 }
 
@@ -536,7 +542,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         }
         let lo = math::max(r_lo, w_lo);
         let hi = math::min(r_hi, w_hi);
-        if !(hi - lo > math::c::<T>(4.0) * self.dy) {
+        if !math::is_finite(hi - lo) || hi - lo <= math::c::<T>(4.0) * self.dy {
             return Err(Error::NoContact);
         }
         let mut step = self.dy;
@@ -685,11 +691,15 @@ pub fn equilibrium_roll<T: Real, const N: usize, const M: usize>(
         let g = WheelRail::<T, N, M>::place(rail, wheel, setup, &pose, side, grid_step)?;
         Ok(g.axle_height())
     };
-    let f = |roll: T| -> Result<T, Error> { Ok(height(roll, Side::Left)? - height(roll, Side::Right)?) };
+    let f = |roll: T| -> Result<T, Error> {
+        Ok(height(roll, Side::Left)? - height(roll, Side::Right)?)
+    };
     let (mut a, mut b) = (math::c::<T>(-0.05), math::c::<T>(0.05));
     let (mut fa, mut fb) = (f(a)?, f(b)?);
     if (fa > T::ZERO) == (fb > T::ZERO) {
-        return Err(Error::OutOfRange("no roll in [-0.05, 0.05] rad balances the wheels"));
+        return Err(Error::OutOfRange(
+            "no roll in [-0.05, 0.05] rad balances the wheels",
+        ));
     }
     let tol = if T::EPSILON < math::c(1e-10) {
         math::c::<T>(1e-9)
