@@ -178,6 +178,8 @@ pub struct PlacedRail<'a, T, const N: usize> {
     ty: T,
     tz: T,
     cant: T,
+    /// Curve parameter of the rail top (highest point in S).
+    pub t_top: T,
 }
 
 impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
@@ -189,6 +191,7 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
             ty: T::ZERO,
             tz: T::ZERO,
             cant,
+            t_top: T::ZERO,
         }
     }
 
@@ -204,12 +207,6 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
             t,
             profile: p,
         }
-    }
-
-    /// Lateral position of node `i` in S.
-    fn node_y(&self, i: usize) -> T {
-        let (qy, qz) = (self.table.y[i.min(N - 1)], -self.table.z[i.min(N - 1)]);
-        qy * self.cos_a - qz * self.sin_a + self.ty
     }
 
     /// Places the rail: top at z = 0, gauge face at y_S = gauge/2 (see module docs).
@@ -235,6 +232,7 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         let hi = T::from_usize((k_top + 1).min(n - 1));
         let t_top = golden_max(|t| r.at(t).z, lo, hi, 60);
         z_top = r.at(t_top).z;
+        r.t_top = t_top;
         // gauge point: walk from the top towards the track-centre side (decreasing index)
         let target = z_top - setup.gauge_depth;
         let mut k = k_top;
@@ -412,6 +410,38 @@ fn golden_max<T: Real, F: Fn(T) -> T>(f: F, lo: T, hi: T, iters: usize) -> T {
 /// Finds the curve parameter where a monotone non-decreasing function of the parameter (lateral
 /// position) equals `target`, with a node pointer `k` that only moves forward. Returns the
 /// parameter, or `None` if outside the curve.
+/// The largest node window [lo, hi] around `start` on which `f(node)` is non-decreasing.
+fn monotone_window<T: Real, F: Fn(usize) -> T>(f: F, len: usize, start: usize) -> (usize, usize) {
+    let start = start.min(len.saturating_sub(1));
+    let (mut lo, mut hi) = (start, start);
+    let (mut f_lo, mut f_hi) = (f(start), f(start));
+    for _ in 0..len {
+        if lo == 0 {
+            break;
+        }
+        let v = f(lo - 1);
+        if v <= f_lo {
+            lo -= 1;
+            f_lo = v;
+        } else {
+            break;
+        }
+    }
+    for _ in 0..len {
+        if hi + 1 >= len {
+            break;
+        }
+        let v = f(hi + 1);
+        if v >= f_hi {
+            hi += 1;
+            f_hi = v;
+        } else {
+            break;
+        }
+    }
+    (lo, hi)
+}
+
 fn solve_forward<T: Real, F: Fn(T) -> T>(
     f: &F,
     len: usize,
@@ -533,10 +563,29 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         let wheel = self.wheel;
         let fy_r = |t: T| rail.at(t).y;
         let fy_w = |t: T| wheel.at(t).y;
-        let r_lo = rail.node_y(0);
-        let r_hi = rail.node_y(rl - 1);
-        let w_lo = fy_w(T::ZERO);
-        let w_hi = fy_w(T::from_usize(wl - 1));
+        // lateral windows on which each placed curve is monotone in y_S: around the rail top and
+        // around the wheel's tape circle (y_w = 0); side faces that overhang after cant, roll or
+        // yaw are cut off there
+        let k_top = (T::to_f64(math::floor(rail.t_top)) as usize).min(rl - 1);
+        let (rk0, rk1) = monotone_window(|k| fy_r(T::from_usize(k)), rl, k_top);
+        let mut k_tape = 0usize;
+        for k in 0..wl {
+            if self.wheel.table.y[k.min(N - 1)] <= T::ZERO {
+                k_tape = k;
+            } else {
+                break;
+            }
+        }
+        let (wk0, wk1) = monotone_window(|k| fy_w(T::from_usize(k)), wl, k_tape);
+        if rk1 <= rk0 || wk1 <= wk0 {
+            return Err(Error::BadProfile(
+                "profile not monotone in y near the contact",
+            ));
+        }
+        let r_lo = fy_r(T::from_usize(rk0));
+        let r_hi = fy_r(T::from_usize(rk1));
+        let w_lo = fy_w(T::from_usize(wk0));
+        let w_hi = fy_w(T::from_usize(wk1));
         if !(math::is_finite(w_lo) && math::is_finite(w_hi)) {
             return Err(Error::NonFinite("wheel placement"));
         }
@@ -555,17 +604,17 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         self.dy = step;
         self.y0 = lo;
         let tol = math::c::<T>(1e-11) + math::c::<T>(8.0) * T::EPSILON * math::abs(hi);
-        let (mut kr, mut kw) = (0usize, 0usize);
-        let mut fr = (fy_r(T::ZERO), fy_r(T::ONE));
-        let mut fw = (fy_w(T::ZERO), fy_w(T::ONE));
+        let (mut kr, mut kw) = (rk0, wk0);
+        let mut fr = (fy_r(T::from_usize(rk0)), fy_r(T::from_usize(rk0 + 1)));
+        let mut fw = (fy_w(T::from_usize(wk0)), fy_w(T::from_usize(wk0 + 1)));
         let mut jmin = 0usize;
         let mut gmin = T::MAX;
         for j in 0..n {
             let y = lo + T::from_usize(j) * step;
             let y = math::clamp(y, lo, hi);
-            let tr = solve_forward(&fy_r, rl, &mut kr, &mut fr, y, tol)
+            let tr = solve_forward(&fy_r, rk1 + 1, &mut kr, &mut fr, y, tol)
                 .ok_or(Error::BadProfile("rail not monotone in y"))?;
-            let tw = solve_forward(&fy_w, wl, &mut kw, &mut fw, y, tol)
+            let tw = solve_forward(&fy_w, wk1 + 1, &mut kw, &mut fw, y, tol)
                 .ok_or(Error::BadProfile("wheel not monotone in y"))?;
             let pr = rail.at(tr);
             let pw = wheel.at(tw);
