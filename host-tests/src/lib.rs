@@ -5,3 +5,5 @@
 
 pub mod data;
 pub mod influence;
+pub mod tang;
+pub mod wear_ref;
