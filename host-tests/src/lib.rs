@@ -6,6 +6,7 @@
 pub mod cases;
 pub mod data;
 pub mod influence;
+pub mod profiles;
 pub mod table;
 pub mod tang;
 pub mod wear_ref;
