@@ -16,6 +16,7 @@ pub mod error;
 pub mod fastrip;
 pub mod fastsim;
 pub mod hertz;
+pub mod hertz_table;
 pub mod kalker;
 pub mod material;
 pub mod math;
