@@ -145,12 +145,18 @@ fn typed_errors() {
         kalker::coefficients(1.0, 0.6).map(|k| k.c11),
         Err(Error::OutOfRange("nu"))
     );
-    assert!(kalker::coefficients(1e-300f64, 0.28)
+    assert!(kalker::coefficients(1e-30f64, 0.28)
         .unwrap()
-        .c11
+        .c33
         .is_finite());
-    assert!(kalker::coefficients(1e300f64, 0.28)
-        .unwrap()
-        .c11
-        .is_finite());
+    assert!(kalker::coefficients(1e30f64, 0.28).unwrap().c23.is_finite());
+    // C33 ~ 1/g and C23 ~ g^(-3/2) overflow: a typed error, not ∞.
+    assert_eq!(
+        kalker::coefficients(1e-310f64, 0.28).map(|k| k.c33),
+        Err(Error::OutOfRange("a/b"))
+    );
+    assert_eq!(
+        kalker::coefficients(1e300f64, 0.28).map(|k| k.c23),
+        Err(Error::OutOfRange("a/b"))
+    );
 }

@@ -446,5 +446,5 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
         res.strips[j] = tot;
         res.total.merge(&tot);
     }
-    Ok(res)
+    res.checked()
 }

@@ -236,5 +236,5 @@ pub fn fastsim<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
         res.strips[j] = tot;
         res.total.merge(&tot);
     }
-    Ok(res)
+    res.checked()
 }

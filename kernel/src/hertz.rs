@@ -307,6 +307,23 @@ pub struct HertzSolution<T> {
 }
 
 impl<T: Real> HertzSolution<T> {
+    /// Every output finite and positive (extreme inputs can overflow or underflow in the
+    /// intermediate products): `NonFinite("hertz result")` / `NonPositive("hertz result")` otherwise.
+    fn checked(self) -> Result<Self, Error> {
+        for v in [
+            self.a,
+            self.b,
+            self.p0,
+            self.delta,
+            self.load,
+            self.curv_a,
+            self.curv_b,
+        ] {
+            check_positive(v, "hertz result")?;
+        }
+        Ok(self)
+    }
+
     /// Hertz pressure p0 √(1 − x²/a² − y²/b²) at (x, y) (mm), 0 outside, MPa.
     pub fn pressure(&self, x: T, y: T) -> T {
         let s = T::ONE - (x / self.a) * (x / self.a) - (y / self.b) * (y / self.b);
@@ -336,7 +353,7 @@ pub fn from_load<T: Real>(
     let q = math::cbrt(c::<T>(3.0) * load / (c::<T>(4.0) * mat.e_star * sum));
     let a = coef.m * q;
     let b = coef.n * q;
-    Ok(HertzSolution {
+    HertzSolution {
         a,
         b,
         p0: c::<T>(3.0) * load / (T::TWO * T::PI * a * b),
@@ -345,7 +362,8 @@ pub fn from_load<T: Real>(
         curv_a,
         curv_b,
         coef,
-    })
+    }
+    .checked()
 }
 
 /// Hertz solution from curvatures A, B (1/mm) and the approach δ (mm): N = C_H δ^(3/2),
@@ -365,7 +383,7 @@ pub fn from_approach<T: Real>(
     let load = c::<T>(4.0 / 3.0) * mat.e_star * sum * q * q * q;
     let a = coef.m * q;
     let b = coef.n * q;
-    Ok(HertzSolution {
+    HertzSolution {
         a,
         b,
         p0: c::<T>(3.0) * load / (T::TWO * T::PI * a * b),
@@ -374,7 +392,8 @@ pub fn from_approach<T: Real>(
         curv_a,
         curv_b,
         coef,
-    })
+    }
+    .checked()
 }
 
 /// Curvatures A, B (1/mm) that give semi-axes a (along x), b (along y) (mm) under load N (N)
@@ -402,7 +421,7 @@ pub fn curvatures_from_semi_axes<T: Real>(
     } else {
         (sum / (T::ONE + rho), sum * rho / (T::ONE + rho))
     };
-    Ok(HertzSolution {
+    HertzSolution {
         a,
         b,
         p0: c::<T>(3.0) * load / (T::TWO * T::PI * a * b),
@@ -411,7 +430,8 @@ pub fn curvatures_from_semi_axes<T: Real>(
         curv_a,
         curv_b,
         coef,
-    })
+    }
+    .checked()
 }
 
 #[cfg(test)]

@@ -584,7 +584,7 @@ use crate::Real;
 /// (ρ < e^−18.5 ≈ 9e-9) or for non-positive/non-finite input: use [`crate::hertz::coefficients`].
 #[inline]
 pub fn mnr<T: Real>(curv_a: T, curv_b: T) -> Option<(T, T, T)> {
-    if !(curv_a > T::ZERO && curv_b > T::ZERO) || !math::is_finite(curv_a + curv_b) {
+    if !(curv_a > T::ZERO && curv_b > T::ZERO && math::is_finite(curv_a + curv_b)) {
         return None;
     }
     let a_major = curv_a <= curv_b;
@@ -595,7 +595,7 @@ pub fn mnr<T: Real>(curv_a: T, curv_b: T) -> Option<(T, T, T)> {
     };
     let u = math::ln(rho);
     let x = (u - T::from_f64(U0)) / T::from_f64(H);
-    if !(x >= T::ZERO) {
+    if x.partial_cmp(&T::ZERO) == Some(core::cmp::Ordering::Less) || !math::is_finite(x) {
         return None;
     }
     let fl = math::floor(x);

@@ -185,6 +185,19 @@ pub struct KalkerCoefficients<T> {
     pub c33: T,
 }
 
+impl<T: Real> KalkerCoefficients<T> {
+    /// All four finite and positive (the asymptotes overflow for a/b or b/a below ~1e-300):
+    /// `OutOfRange("a/b")` otherwise.
+    fn checked(self) -> Result<Self, Error> {
+        for v in [self.c11, self.c22, self.c23, self.c33] {
+            if !math::is_finite(v) || v <= T::ZERO {
+                return Err(Error::OutOfRange("a/b"));
+            }
+        }
+        Ok(self)
+    }
+}
+
 /// Table index in [`KALKER_TABLE`] of row k (1-based, g = 0.1 k) of case 1 (a/b) or case 2 (b/a).
 fn row_index(case_ab: bool, k: usize) -> usize {
     if case_ab {
@@ -233,12 +246,13 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
             }
             *o = poisson(v[0], v[1], v[2], nu);
         }
-        return Ok(KalkerCoefficients {
+        return KalkerCoefficients {
             c11: out[0],
             c22: out[1],
             c23: out[2],
             c33: out[3],
-        });
+        }
+        .checked();
     }
     let pi = T::PI;
     let one_m_nu = T::ONE - nu;
@@ -249,10 +263,11 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
         let c23 = pi * math::sqrt(g) / (c::<T>(3.0) * one_m_nu)
             * (T::ONE + nu * (math::ln(c::<T>(16.0) / g) - c::<T>(5.0)));
         let c33 = pi * pi / (c::<T>(16.0) * one_m_nu * g);
-        Ok(KalkerCoefficients { c11, c22, c23, c33 })
+        KalkerCoefficients { c11, c22, c23, c33 }.checked()
     } else {
         // a ≫ b.
-        let lam = math::ln(c::<T>(16.0) / (g * g));
+        // Λ = ln(16/g²) = ln 16 − 2 ln g (no underflow of g²).
+        let lam = math::ln(c::<T>(16.0)) - T::TWO * math::ln(g);
         let k3 = c::<T>(3.0) - math::ln(c::<T>(4.0));
         let d1 = lam - T::TWO * nu;
         let c11 = T::TWO * pi / (d1 * g) * (T::ONE + k3 / d1);
@@ -262,7 +277,7 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
             / (c::<T>(3.0) * g * math::sqrt(g) * (one_m_nu * lam - T::TWO + c::<T>(4.0) * nu));
         let r = &KALKER_TABLE[18].c;
         let c33 = poisson(c::<T>(r[9]), c::<T>(r[10]), c::<T>(r[11]), nu);
-        Ok(KalkerCoefficients { c11, c22, c23, c33 })
+        KalkerCoefficients { c11, c22, c23, c33 }.checked()
     }
 }
 

@@ -702,6 +702,18 @@ pub struct Tangential<T, const S: usize> {
     pub strips: [Totals<T>; S],
 }
 
+impl<T: Real, const S: usize> Tangential<T, S> {
+    /// `Err(NonFinite("tangential result"))` unless all totals are finite (inputs so extreme that
+    /// the tractions overflow, e.g. creepages ~1e300).
+    pub(crate) fn checked(self) -> Result<Self, Error> {
+        let t = &self.total;
+        for v in [t.fx, t.fy, t.mz, t.fn_] {
+            check_finite(v, "tangential result")?;
+        }
+        Ok(self)
+    }
+}
+
 impl<T: Real, const S: usize> Default for Tangential<T, S> {
     fn default() -> Self {
         Self {

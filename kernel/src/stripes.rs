@@ -853,9 +853,9 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         load: T,
     ) -> Result<LoadControl<T>, Error> {
         let n = self.n;
-        for i in 0..n {
+        for (i, smp) in samples.iter().enumerate().take(n) {
             let ei = self.e[i];
-            self.tmp[i] = self.kst[i] * samples[i].dy * ei;
+            self.tmp[i] = self.kst[i] * smp.dy * ei;
             self.hu[i] = self.zref[i] + (self.z[i] - self.zref[i]) / ei;
         }
         let hint = if self.delta_last > T::ZERO {
