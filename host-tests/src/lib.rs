@@ -6,4 +6,5 @@
 pub mod cases;
 pub mod data;
 pub mod influence;
+pub mod profiles;
 pub mod table;
