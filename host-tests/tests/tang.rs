@@ -264,11 +264,8 @@ fn contact_fastsim_exact_44() {
             }
         }
     }
-    for j in 0..44 {
-        assert!(
-            (kw.depth[j] - w[j]).abs() <= 1e-12 * w[j].abs().max(1e-30),
-            "{j}"
-        );
+    for (j, (kd, rd)) in kw.depth.iter().zip(&w).enumerate() {
+        assert!((kd - rd).abs() <= 1e-12 * rd.abs().max(1e-30), "{j}");
     }
 }
 
