@@ -4,4 +4,6 @@
 //! the reference solvers (NORM, TANG) and case sets. The validation suites live in `tests/`.
 
 pub mod data;
+pub mod fftconv;
 pub mod influence;
+pub mod norm;
