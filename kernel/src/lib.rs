@@ -7,13 +7,25 @@
 //! Units (methods.md §0.1): lengths mm, areas mm², forces N, stresses MPa, angles rad, velocities
 //! mm/s; creepages ξ, η dimensionless, spin φ in rad/mm. Tractions act on body 1 (the wheel).
 #![no_std]
+#![cfg_attr(feature = "hw-sqrt", feature(core_float_math))]
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod adapt;
 pub mod error;
+pub mod fastrip;
+pub mod fastsim;
+pub mod geometry;
+pub mod hertz;
+pub mod kalker;
 pub mod material;
 pub mod math;
+pub mod patch;
+pub mod pipeline;
+pub mod profile;
 pub mod real;
+pub mod stripes;
+pub mod wear;
 
 pub use error::Error;
 pub use material::Material;

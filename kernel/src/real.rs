@@ -89,6 +89,45 @@ pub trait Real:
     fn mul_add(x: Self, a: Self, b: Self) -> Self;
 }
 
+mod sqrt_impl {
+    //! Square-root backend. Both libm's and the hardware (`VSQRT`) square roots are correctly
+    //! rounded IEEE-754 operations, so the `hw-sqrt` feature changes speed, never results.
+    //! `hw-sqrt` (nightly `core_float_math`, i.e. `RUSTC_BOOTSTRAP=1`) routes through
+    //! `core::{f32,f64}::math::sqrt`, which LLVM lowers to `VSQRT.F32` on Cortex-M4F/M7 and
+    //! `VSQRT.F64` on a double-precision M7 (a soft-float library call elsewhere). It takes
+    //! precedence over `fast-math`'s approximate f32 square root.
+
+    /// f64 square root.
+    #[inline(always)]
+    pub fn sqrt(x: f64) -> f64 {
+        #[cfg(feature = "hw-sqrt")]
+        {
+            core::f64::math::sqrt(x)
+        }
+        #[cfg(not(feature = "hw-sqrt"))]
+        {
+            libm::sqrt(x)
+        }
+    }
+
+    /// f32 square root.
+    #[inline(always)]
+    pub fn sqrtf(x: f32) -> f32 {
+        #[cfg(feature = "hw-sqrt")]
+        {
+            core::f32::math::sqrt(x)
+        }
+        #[cfg(all(not(feature = "hw-sqrt"), feature = "fast-math"))]
+        {
+            super::fast::sqrt(x)
+        }
+        #[cfg(all(not(feature = "hw-sqrt"), not(feature = "fast-math")))]
+        {
+            libm::sqrtf(x)
+        }
+    }
+}
+
 macro_rules! impl_real {
     ($t:ty, $sqrt:path, $cbrt:path, $abs:path, $pow:path, $exp:path, $ln:path, $sin:path,
      $cos:path, $tan:path, $asin:path, $acos:path, $atan:path, $atan2:path, $asinh:path,
@@ -192,7 +231,7 @@ macro_rules! impl_real {
 
 impl_real!(
     f64,
-    libm::sqrt,
+    sqrt_impl::sqrt,
     libm::cbrt,
     libm::fabs,
     libm::pow,
@@ -213,7 +252,7 @@ impl_real!(
 #[cfg(not(feature = "fast-math"))]
 impl_real!(
     f32,
-    libm::sqrtf,
+    sqrt_impl::sqrtf,
     libm::cbrtf,
     libm::fabsf,
     libm::powf,
@@ -236,6 +275,7 @@ mod fast {
     //! micromath approximations for the f32 hot paths (sqrt, exp, ln, atan2, trigonometry);
     //! functions micromath lacks (cbrt, asinh, pow, acos, asin, hypot) stay on libm.
     use micromath::F32;
+    #[cfg_attr(feature = "hw-sqrt", allow(dead_code))]
     #[inline(always)]
     pub fn sqrt(x: f32) -> f32 {
         F32(x).sqrt().0
@@ -273,7 +313,7 @@ mod fast {
 #[cfg(feature = "fast-math")]
 impl_real!(
     f32,
-    fast::sqrt,
+    sqrt_impl::sqrtf,
     libm::cbrtf,
     libm::fabsf,
     libm::powf,

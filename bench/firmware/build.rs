@@ -1,0 +1,33 @@
+//! Finds the repository's `memory.x` and links with cortex-m-rt's `link.x` on thumb targets.
+
+use std::path::PathBuf;
+
+fn main() {
+    let manifest = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("set by cargo"));
+    let root = manifest
+        .parent()
+        .and_then(|p| p.parent())
+        .expect("bench/firmware sits two levels below the repository root")
+        .to_path_buf();
+    println!("cargo:rustc-link-search={}", root.display());
+    println!("cargo:rerun-if-changed={}", root.join("memory.x").display());
+    let expected = manifest.join("src").join("expected.rs");
+    println!("cargo:rerun-if-changed={}", expected.display());
+    if !expected.is_file() {
+        panic!(
+            "{} is missing: generate it on the host with \
+             `cargo run -p wrc-bench --release --bin firmware-expected` (as .ci/run does)",
+            expected.display()
+        );
+    }
+    // Board label printed by the firmware (.ci/run sets it per QEMU machine).
+    println!("cargo:rerun-if-env-changed=WRC_BOARD");
+    let board = std::env::var("WRC_BOARD").unwrap_or_else(|_| "unspecified-board".into());
+    println!("cargo:rustc-env=WRC_BOARD={board}");
+    if std::env::var("TARGET")
+        .unwrap_or_default()
+        .starts_with("thumb")
+    {
+        println!("cargo:rustc-link-arg=-Tlink.x");
+    }
+}

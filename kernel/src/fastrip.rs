@@ -1,0 +1,450 @@
+//! FaStrip (Sichani, Enblom & Berg 2016; methods.md §4) on a [`StripPatch`], in the general per-strip
+//! form of §4.3 — which is the Hertzian form of §4.2 when the patch is a Hertz ellipse with exact
+//! strips (P_j = μp̂_j/a_j = μp0/a, reference ellipse (a, b)).
+//!
+//! Per strip j (creepages made dimensionless with the strip pressure slope P_j = μ p̂_j / a_j):
+//! ξ* = −(Gξ/(2P))(4(1−ν)/π²)C11, η* = −(G(1−ν)η/(2P))(4/π²)C22, φ* = −(Gφ/(2P))(3/π)√(b/a)C23,
+//! X = ξ* − φ* y_j; slip-zone half-length d = d̃/(1−ν) with
+//! d̃ = (η*² + X²)/(√Δ − η*φ*), Δ = η*² + (1 − φ*²)X² (cancellation-free root; `Contact5` rule).
+//! Adhesion zone x̄ ∈ (2d − a_j, a_j] (x̄ = x − x_c,j): p = P(κS₁ − κ'S₂, λS₁ − λ'S₂),
+//! S₁ = √(a_j² − x̄²), S₂ = √((a_j − d)² − (x̄ − d)²). Slip zone: p = μ p_n · p^F/|p^F| with p^F the
+//! FASTSIM traction of the same cell (direction pass, any [`FastsimSettings`]).
+//!
+//! Numerics: S₁ − S₂ = 2d(a_j − x̄)/(S₁ + S₂) is evaluated in this form and κd, λ'd are formed
+//! directly (StripTheory: κd = X/(1−ν), λ'd = η*/(1−ν)), so vanishing creepage has no 0/0 and f32
+//! keeps full accuracy in the linear limit.
+//!
+//! Choices (methods.md [UNCERTAIN] items, documented and selectable):
+//! * [`LambdaVariant::StripTheory`] (default, §4.4 derivation) or [`LambdaVariant::ContactCompat`]
+//!   (CONTACT M=5/M=6: d instead of (1−ν)d in the spin term, then normalised to κ² + λ² = 1).
+//! * [`LargeSpin::Contact5`] (default: same root while Δ ≥ 0 and √Δ − η*φ* > 0, else full slip) or
+//!   [`LargeSpin::FullSlip`] (CONTACT M=7: full slip whenever |φ*| ≥ 1).
+//! * Slip velocity: always the upwind form of §4.2, s = w̃ + (u(x_i) − u(x_{i+1}))/δx with
+//!   u = (L1 p_x, L2 p_y) of the final tractions and the direction pass's flexibilities, s = 0 in
+//!   adhesion (CONTACT instead keeps FASTSIM's slip; not offered).
+//! * CONTACT M=6 details are options: [`FastripSettings::leading_slip_retry`] and
+//!   [`FastripSettings::edge_margin`]; the M=6 load heuristic of the parabolic bound is
+//!   [`m6_parabolic_bound`].
+
+use crate::error::{check_finite, check_positive, Error};
+use crate::fastsim::{march_strip, FastsimSettings, FlexMode};
+use crate::math::{self, c};
+use crate::patch::{
+    CellOut, CellSink, Creepage, Ellipse, Flexibilities, PressureField, StripPatch, Tangential,
+    Totals, TractionBound,
+};
+use crate::Real;
+
+/// How λ is formed (methods.md §4.4).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum LambdaVariant {
+    /// κ = κ' = X/d̃, λ' = η*/d̃, λ = λ' + φ* (strip-theory derivation; default).
+    StripTheory,
+    /// CONTACT M=5/M=6: κ = X/N, λ = (η* + φ* d)/N, N = √(X² + (η* + φ*d)²), λ' = λ − φ*.
+    ContactCompat,
+}
+
+/// Strips whose strip-theory discriminant fails at large spin (methods.md §4.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum LargeSpin {
+    /// CONTACT M=5: keep the root while Δ ≥ 0 and √Δ − η*φ* > 0, otherwise full slip (default).
+    Contact5,
+    /// CONTACT M=7: whole strip in slip whenever |φ*| ≥ 1.
+    FullSlip,
+}
+
+/// Optional check of the strip-theory adhesion traction against the bound (CONTACT M=5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum BoundCheck<T> {
+    /// No check (default, as CONTACT M=6).
+    Off,
+    /// Discard strip theory for a strip (keep FASTSIM) if |p| > μ p_n in its adhesion zone.
+    Local,
+    /// CONTACT M=5's weaker test: discard if |p| > the given limit μ p0 (MPa).
+    Peak(T),
+}
+
+/// FaStrip options.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct FastripSettings<T> {
+    /// The FASTSIM pass that gives the slip-zone directions; its μ is the friction coefficient of the
+    /// whole solve (default bound `Elliptic`).
+    pub direction: FastsimSettings<T>,
+    /// λ form.
+    pub lambda: LambdaVariant,
+    /// Large-spin rule.
+    pub large_spin: LargeSpin,
+    /// Bound check.
+    pub bound_check: BoundCheck<T>,
+    /// CONTACT M=6: if the leading contact cell of a strip slips in the direction pass, repeat the
+    /// pass with the single flexibility L_t (argument √(a b), mm). `None` (default): off.
+    pub leading_slip_retry: Option<T>,
+    /// Cells with |x − x_c,j| ≥ a_j − margin are exterior (mm; CONTACT M=6 uses 1e-3, default 0).
+    pub edge_margin: T,
+}
+
+impl<T: Real> FastripSettings<T> {
+    /// Defaults of methods.md §4: StripTheory λ, `Contact5`, no bound check, direction pass canonical
+    /// FASTSIM with the `Elliptic` bound (μ p_n).
+    pub fn new(mu: T) -> Self {
+        Self {
+            direction: FastsimSettings::canonical(mu, TractionBound::Elliptic),
+            lambda: LambdaVariant::StripTheory,
+            large_spin: LargeSpin::Contact5,
+            bound_check: BoundCheck::Off,
+            leading_slip_retry: None,
+            edge_margin: T::ZERO,
+        }
+    }
+}
+
+impl<T: Real> FastripSettings<T> {
+    /// CONTACT M=6 ("original FaStrip") on a Hertz patch with exact strips: direction pass canonical
+    /// FASTSIM with the parabolic bound and the load heuristic ([`m6_parabolic_bound`]), leading-slip
+    /// retry with L_t, edge margin 1e-3 mm, no bound check (methods.md §4.5 item 4).
+    pub fn contact_m6(mu: T, ellipse: Ellipse<T>, lambda: LambdaVariant) -> Self {
+        let mut s = Self::new(mu);
+        s.direction.bound = m6_parabolic_bound(ellipse);
+        s.leading_slip_retry = Some(math::sqrt(ellipse.a * ellipse.b));
+        s.edge_margin = c(1e-3);
+        s.lambda = lambda;
+        s
+    }
+
+    /// CONTACT M=5 ("modified FaStrip"), to be used on a patch prepared with
+    /// [`StripPatch::modified_fastrip_reference`]: direction pass FASTSIM with the `Elliptic` bound,
+    /// blending for the input ellipse (a, b, N) and c_off = 1/6; CONTACT's peak bound check
+    /// |p| > μ p0,e with the equivalent ellipse `equiv`.
+    pub fn contact_m5(
+        mu: T,
+        a: T,
+        b: T,
+        load: T,
+        equiv: Ellipse<T>,
+        lambda: LambdaVariant,
+    ) -> Self {
+        let mut s = Self::new(mu);
+        s.direction.flex = FlexMode::Blended { a, b, load };
+        s.direction.c_off = c(1.0 / 6.0);
+        s.bound_check = BoundCheck::Peak(mu * equiv.p0);
+        s.lambda = lambda;
+        s
+    }
+}
+
+/// The M=6 load heuristic for the direction pass's parabolic bound (methods.md §4.5 item 4): the
+/// ellipse with p0 computed from N(1 + (1 − a/b)⁴) when a/b < 1.
+pub fn m6_parabolic_bound<T: Real>(e: Ellipse<T>) -> TractionBound<T> {
+    let r = e.a / e.b;
+    let mut p0 = e.p0;
+    if r < T::ONE {
+        let q = T::ONE - r;
+        p0 *= T::ONE + q * q * q * q;
+    }
+    TractionBound::Parabolic(Ellipse { p0, ..e })
+}
+
+/// Strip-theory solution of one strip.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StripSolution<T> {
+    /// Pressure slope P_j = μ p̂_j/a_j, MPa/mm.
+    pub slope: T,
+    /// Slip-zone half-length d_j, mm (≥ a_j for full slip).
+    pub d: T,
+    /// `true` if the whole strip slips.
+    pub full_slip: bool,
+    /// κ d (mm).
+    pub kd: T,
+    /// λ' d (mm).
+    pub ld: T,
+    /// φ* (dimensionless).
+    pub phi_star: T,
+}
+
+/// Strip-theory quantities of strip (y, a_j, p̂_j, C_ij) for creepages `cr`.
+#[allow(clippy::too_many_arguments)]
+pub fn strip_solution<T: Real>(
+    s: &crate::patch::Strip<T>,
+    cr: &Creepage<T>,
+    mu: T,
+    g: T,
+    nu: T,
+    lambda: LambdaVariant,
+    large_spin: LargeSpin,
+) -> StripSolution<T> {
+    let p = mu * s.p_hat / s.a;
+    let four_pi2 = c::<T>(4.0) / (T::PI * T::PI);
+    let xs = -(g * cr.xi / (T::TWO * p)) * four_pi2 * (T::ONE - nu) * s.c11;
+    let es = -(g * (T::ONE - nu) * cr.eta / (T::TWO * p)) * four_pi2 * s.c22;
+    let ps = -(g * cr.phi / (T::TWO * p)) * (c::<T>(3.0) / T::PI) * s.sqrt_b_over_a * s.c23;
+    let x = xs - ps * s.y;
+    let full = StripSolution {
+        slope: p,
+        d: s.a,
+        full_slip: true,
+        kd: T::ZERO,
+        ld: T::ZERO,
+        phi_star: ps,
+    };
+    let q = es * es + x * x;
+    if q == T::ZERO {
+        return StripSolution {
+            slope: p,
+            d: T::ZERO,
+            full_slip: false,
+            kd: T::ZERO,
+            ld: T::ZERO,
+            phi_star: ps,
+        };
+    }
+    if large_spin == LargeSpin::FullSlip && math::abs(ps) >= T::ONE {
+        return full;
+    }
+    let delta = es * es + (T::ONE - ps * ps) * x * x;
+    // NaN-safe forms (a NaN from overflowing inputs selects full slip).
+    let delta_ok = delta >= T::ZERO;
+    if !delta_ok {
+        return full;
+    }
+    let den = math::sqrt(delta) - es * ps;
+    let den_ok = den > T::ZERO;
+    if !den_ok {
+        return full;
+    }
+    let dt = q / den;
+    let one_m_nu = T::ONE - nu;
+    let d = dt / one_m_nu;
+    let partial = d < s.a;
+    if !partial || !math::is_finite(d) {
+        return full;
+    }
+    let (kd, ld) = match lambda {
+        LambdaVariant::StripTheory => (x / one_m_nu, es / one_m_nu),
+        LambdaVariant::ContactCompat => {
+            let ly = es + ps * d;
+            let nm = math::hypot(x, ly);
+            if nm > T::ZERO {
+                (x / nm * d, (ly / nm - ps) * d)
+            } else {
+                (x / one_m_nu, es / one_m_nu)
+            }
+        }
+    };
+    StripSolution {
+        slope: p,
+        d,
+        full_slip: false,
+        kd,
+        ld,
+        phi_star: ps,
+    }
+}
+
+/// Adhesion-zone traction of strip solution `ss` at x̄ (mm) on a strip of half-length `a`
+/// (`None` in the slip zone).
+#[inline]
+fn adhesion_traction<T: Real>(ss: &StripSolution<T>, a: T, xb: T) -> Option<(T, T)> {
+    if ss.full_slip || xb <= T::TWO * ss.d - a {
+        return None;
+    }
+    let s1 = math::sqrt(math::max(T::ZERO, a * a - xb * xb));
+    let r = a - ss.d;
+    let u = xb - ss.d;
+    let s2 = math::sqrt(math::max(T::ZERO, r * r - u * u));
+    let sum = s1 + s2;
+    // (S₁ − S₂)/d = 2(a − x̄)/(S₁ + S₂).
+    let diff_over_d = if sum > T::ZERO {
+        T::TWO * (a - xb) / sum
+    } else {
+        T::ZERO
+    };
+    Some((
+        ss.slope * ss.kd * diff_over_d,
+        ss.slope * (ss.ld * diff_over_d + ss.phi_star * s1),
+    ))
+}
+
+/// FaStrip on `patch` with normal pressure `pressure` (slip zone bound μ p_n, also used by the
+/// direction pass's `Elliptic` bound), creepages `cr`; every contact cell goes to `sink`.
+///
+/// Errors: as [`crate::fastsim::fastsim`], plus a non-finite or negative `edge_margin` or
+/// `leading_slip_retry` argument.
+pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: CellSink<T>>(
+    patch: &StripPatch<T, S, C>,
+    pressure: &P,
+    cr: &Creepage<T>,
+    set: &FastripSettings<T>,
+    sink: &mut K,
+) -> Result<Tangential<T, S>, Error> {
+    patch.validate()?;
+    cr.check()?;
+    let dset = &set.direction;
+    dset.check()?;
+    check_finite(set.edge_margin, "edge_margin")?;
+    if set.edge_margin < T::ZERO {
+        return Err(Error::NonPositive("edge_margin"));
+    }
+    if let Some(r) = set.leading_slip_retry {
+        check_positive(r, "retry sqrt_ab")?;
+    }
+    if let BoundCheck::Peak(l) = set.bound_check {
+        check_positive(l, "bound check limit")?;
+    }
+    let mu = dset.mu;
+    let (g, nu) = (patch.mat.g, patch.mat.nu);
+    let dx = patch.dx;
+    let margin = set.edge_margin;
+    let mut res = Tangential::<T, S>::default();
+    for j in 0..S {
+        let s = patch.strips[j];
+        if s.a <= margin {
+            continue;
+        }
+        // Direction pass (FASTSIM).
+        let (mut fl, _) = dset.strip_flex(&s.flex, cr, g, s.c11, s.c22);
+        let mut pf = [[T::ZERO; 2]; C];
+        let mut lead_slip: Option<bool> = None;
+        let run = |fl: &Flexibilities<T>, pf: &mut [[T; 2]; C], lead: &mut Option<bool>| {
+            march_strip(
+                patch,
+                j,
+                pressure,
+                cr,
+                mu,
+                &dset.bound,
+                dset.c_off,
+                fl,
+                margin,
+                |i, o| {
+                    if let Some(v) = pf.get_mut(i) {
+                        *v = [o.px, o.py];
+                    }
+                    if lead.is_none() {
+                        *lead = Some(o.slip);
+                    }
+                },
+            );
+        };
+        run(&fl, &mut pf, &mut lead_slip);
+        if let (Some(sqrt_ab), Some(true)) = (set.leading_slip_retry, lead_slip) {
+            let lt = s.flex.single(cr, sqrt_ab);
+            fl = Flexibilities {
+                l1: lt,
+                l2: lt,
+                l3: lt,
+            };
+            let mut dummy = None;
+            run(&fl, &mut pf, &mut dummy);
+        }
+        let ss = strip_solution(&s, cr, mu, g, nu, set.lambda, set.large_spin);
+        // Optional bound check over the adhesion zone.
+        let mut discard = false;
+        if set.bound_check != BoundCheck::Off {
+            for i in 0..C {
+                let x = patch.x(i);
+                let xb = x - s.xc;
+                let inside = math::abs(xb) < s.a - margin;
+                if !inside {
+                    continue;
+                }
+                if let Some((px, py)) = adhesion_traction(&ss, s.a, xb) {
+                    let mag = math::hypot(px, py);
+                    let lim = match set.bound_check {
+                        BoundCheck::Local => mu * pressure.pn(j, i, x, &s),
+                        BoundCheck::Peak(l) => l,
+                        BoundCheck::Off => T::MAX,
+                    };
+                    if mag > lim {
+                        discard = true;
+                    }
+                }
+            }
+        }
+        let mut tot = Totals::default();
+        if discard {
+            march_strip(
+                patch,
+                j,
+                pressure,
+                cr,
+                mu,
+                &dset.bound,
+                dset.c_off,
+                &fl,
+                margin,
+                |i, o| {
+                    tot.add(o);
+                    sink.cell(j, i, o);
+                },
+            );
+        } else {
+            let area = dx * s.dy;
+            let wtx = cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y;
+            let mut up = [T::ZERO; 2]; // u of the upstream neighbour
+            for ii in 0..C {
+                let i = C - 1 - ii;
+                let x = patch.x(i);
+                let xb = x - s.xc;
+                let inside = math::abs(xb) < s.a - margin;
+                if !inside {
+                    up = [T::ZERO; 2];
+                    continue;
+                }
+                let pn = pressure.pn(j, i, x, &s);
+                let wty = cr.eta + (fl.l2 / fl.l3) * cr.phi * (x + dset.c_off * dx);
+                let wx = cr.xi - cr.phi * s.y;
+                let wy = cr.eta + cr.phi * x;
+                let (px, py, slip, bound) = match adhesion_traction(&ss, s.a, xb) {
+                    Some((px, py)) => (px, py, false, mu * pn),
+                    None => {
+                        let gb = mu * pn;
+                        let [fx, fy] = pf.get(i).copied().unwrap_or([T::ZERO; 2]);
+                        let m = math::hypot(fx, fy);
+                        let (dxn, dyn_) = if m >= c(1e-10) {
+                            (fx / m, fy / m)
+                        } else {
+                            let mw = math::hypot(wx, wy);
+                            if mw > T::ZERO {
+                                (-wx / mw, -wy / mw)
+                            } else {
+                                (T::ZERO, T::ZERO)
+                            }
+                        };
+                        (gb * dxn, gb * dyn_, true, gb)
+                    }
+                };
+                let u = [fl.l1 * px, fl.l2 * py];
+                let (sx, sy) = if slip {
+                    (wtx + (u[0] - up[0]) / dx, wty + (u[1] - up[1]) / dx)
+                } else {
+                    (T::ZERO, T::ZERO)
+                };
+                up = u;
+                let o = CellOut {
+                    x,
+                    y: s.y,
+                    area,
+                    pn,
+                    bound,
+                    px,
+                    py,
+                    slip,
+                    sx,
+                    sy,
+                    wx,
+                    wy,
+                };
+                tot.add(&o);
+                sink.cell(j, i, &o);
+            }
+        }
+        res.strips[j] = tot;
+        res.total.merge(&tot);
+    }
+    res.checked()
+}

@@ -1,0 +1,747 @@
+//! Wheelset placement in the track (methods.md §7.1) and the rigid gap on a uniform lateral grid
+//! (§7.2 steps 1–3, 5).
+//!
+//! # Frames
+//! * **Track frame T** (§7.1): x forward, y to the **left**, z up; origin on the track centre line
+//!   in the plane touching both rail tops.
+//! * **Side frame S** of the analysed wheel: the track frame for the left wheel, its mirror image
+//!   (y_S = −y_T) for the right wheel. In S the analysed rail lies at positive y_S with its field
+//!   side outwards, so both sides are computed with the same "right-side" profile files (CONTACT
+//!   canonical form; a left pair is the mirrored right pair). Under the mirror, yaw and roll change
+//!   sign: ψ_S = s ψ_T, φ_S = s φ_T, Δy_S = s Δy_T with s = +1 (left), −1 (right).
+//!
+//! # Placement
+//! * Rail: the profile (file coordinates, y towards the field side, z down) is rotated by the
+//!   extra inclination `cant` towards the track centre, then translated so that its highest point
+//!   lies at z = 0 and its gauge face, at `gauge_depth` below that top, lies at y_S = gauge/2.
+//! * Wheel: the profile point (y_w, z_w) lies at the axial coordinate
+//!   u = back_to_back/2 + (y_w − flange_back_pos) from the wheelset centre and at the radius
+//!   r = r0 + z_w. The wheelset is rolled (about x) and yawed (about z), R = R_z(ψ)·R_x(φ), and
+//!   translated to (0, Δy, z_c).
+//! * **Yaw in the gap**: for each lateral position the wheel's lowest point over the longitudinal
+//!   coordinate x is used (the contact locus of a yawed body of revolution). For the profile point
+//!   at axial u with slope r'(u) the lowest point sits at the angle θ about the axle with
+//!   cos ψ sin θ − sin φ sin ψ cos θ = −r'(u) cos φ sin ψ (closed form), at the longitudinal
+//!   position x reported in the gap grid. The surface normal there lies in the y–z plane, so the
+//!   slope of this lowest-point curve is the wheel's local contact slope.
+//! * The wheel height z_c is chosen so that the minimum of the vertical gap is zero ("touching",
+//!   single-wheel mode with the roll given). [`equilibrium_roll`] finds the roll at which both
+//!   wheels of the wheelset touch at the same height (§7.2 step 5, two-wheel mode).
+//!
+//! # Angle sign (§7.2 step 4)
+//! Angles ("tilt") are those of the surface normal pointing into the wheel, positive when it tilts
+//! towards the track centre (flange side), measured in the track frame (they include the roll).
+
+use crate::profile::{illinois, CurvePoint, ProfileKind, ProfileTable};
+use crate::{math, Error, Real};
+
+/// Track and wheelset constants (mm, rad).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct TrackSetup<T> {
+    /// Track gauge between the gauge faces, measured `gauge_depth` below the rail tops, mm.
+    pub gauge: T,
+    /// Depth below the rail top at which the gauge is measured, mm (EN 13848 / CONTACT: 14).
+    pub gauge_depth: T,
+    /// Back-to-back (flange-back) distance of the wheelset, mm.
+    pub back_to_back: T,
+    /// Lateral coordinate of the flange back in the wheel profile file (after the file's own
+    /// options), mm (S1002 files: −70; the tape circle is at y_w = 0).
+    pub flange_back_pos: T,
+    /// Nominal rolling radius (radius at z_w = 0), mm.
+    pub r0: T,
+    /// Extra rail inclination towards the track centre, rad (0: the rail profile's own
+    /// inclination is used as given; `MBench_UIC60_v3.prr` is already canted 1:40).
+    pub cant: T,
+}
+
+impl<T: Real> TrackSetup<T> {
+    /// Gauge 1435 mm at 14 mm, back-to-back 1360 mm, flange back at −70 mm, R0 = 460 mm, no
+    /// extra cant: the Manchester benchmark / CONTACT `mbench_a22` set-up.
+    pub fn standard() -> Self {
+        TrackSetup {
+            gauge: math::c(1435.0),
+            gauge_depth: math::c(14.0),
+            back_to_back: math::c(1360.0),
+            flange_back_pos: math::c(-70.0),
+            r0: math::c(460.0),
+            cant: T::ZERO,
+        }
+    }
+
+    fn check(&self) -> Result<(), Error> {
+        crate::error::check_positive(self.gauge, "gauge")?;
+        crate::error::check_positive(self.gauge_depth, "gauge_depth")?;
+        crate::error::check_positive(self.back_to_back, "back_to_back")?;
+        crate::error::check_positive(self.r0, "r0")?;
+        crate::error::check_finite(self.flange_back_pos, "flange_back_pos")?;
+        crate::error::check_finite(self.cant, "cant")?;
+        if math::abs(self.cant) > math::c(0.2) {
+            return Err(Error::OutOfRange("cant"));
+        }
+        Ok(())
+    }
+}
+
+/// Which wheel of the wheelset is analysed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum Side {
+    /// Left wheel (+y_T side).
+    Left,
+    /// Right wheel (−y_T side).
+    Right,
+}
+
+impl Side {
+    /// +1 for the left wheel, −1 for the right wheel: y_T = sign · y_S.
+    #[inline]
+    pub fn sign<T: Real>(self) -> T {
+        match self {
+            Side::Left => T::ONE,
+            Side::Right => -T::ONE,
+        }
+    }
+}
+
+/// Wheelset pose relative to the track, in the track frame T.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct WheelsetPose<T> {
+    /// Lateral shift of the wheelset centre along +y_T (to the **left**), mm.
+    pub dy: T,
+    /// Yaw angle about +z_T (up), rad.
+    pub yaw: T,
+    /// Roll angle about +x_T, rad (positive raises the left wheel).
+    pub roll: T,
+}
+
+impl<T: Real> WheelsetPose<T> {
+    /// From CONTACT module-1 inputs (y_ws to the right, yaw about z down, roll about x):
+    /// dy = −y_ws, yaw = −yaw_C, roll = roll_C (methods.md §0.2, §10.9).
+    pub fn from_contact(y_ws: T, yaw_c: T, roll_c: T) -> Self {
+        WheelsetPose {
+            dy: -y_ws,
+            yaw: -yaw_c,
+            roll: roll_c,
+        }
+    }
+
+    /// The mirror image (x–z plane): left wheel at `self` ≡ right wheel at `self.mirrored()`.
+    pub fn mirrored(&self) -> Self {
+        WheelsetPose {
+            dy: -self.dy,
+            yaw: -self.yaw,
+            roll: -self.roll,
+        }
+    }
+
+    fn check(&self) -> Result<(), Error> {
+        crate::error::check_finite(self.dy, "dy")?;
+        crate::error::check_finite(self.yaw, "yaw")?;
+        crate::error::check_finite(self.roll, "roll")?;
+        if math::abs(self.yaw) > math::c(0.2) {
+            return Err(Error::OutOfRange("yaw"));
+        }
+        if math::abs(self.roll) > math::c(0.2) {
+            return Err(Error::OutOfRange("roll"));
+        }
+        Ok(())
+    }
+}
+
+/// A rail point in the side frame S.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct RailPoint<T> {
+    /// Lateral position y_S, mm.
+    pub y: T,
+    /// Height z_S, mm (up).
+    pub z: T,
+    /// Surface tilt (contact-angle sign, track frame), rad.
+    pub angle: T,
+    /// Cross-section curvature, convex positive, 1/mm.
+    pub curvature: T,
+    /// Curve parameter (fractional node index).
+    pub t: T,
+    /// The point in the rail profile file's coordinates.
+    pub profile: CurvePoint<T>,
+}
+
+/// The analysed rail placed in the side frame S.
+#[derive(Clone, Copy, Debug)]
+pub struct PlacedRail<'a, T, const N: usize> {
+    /// The profile table.
+    pub table: &'a ProfileTable<T, N>,
+    cos_a: T,
+    sin_a: T,
+    ty: T,
+    tz: T,
+    cant: T,
+}
+
+impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
+    fn raw(table: &'a ProfileTable<T, N>, cant: T) -> Self {
+        PlacedRail {
+            table,
+            cos_a: math::cos(cant),
+            sin_a: math::sin(cant),
+            ty: T::ZERO,
+            tz: T::ZERO,
+            cant,
+        }
+    }
+
+    /// The rail point at curve parameter `t`.
+    pub fn at(&self, t: T) -> RailPoint<T> {
+        let p = self.table.point(t);
+        let (qy, qz) = (p.y, -p.z);
+        RailPoint {
+            y: qy * self.cos_a - qz * self.sin_a + self.ty,
+            z: qy * self.sin_a + qz * self.cos_a + self.tz,
+            angle: self.cant - p.angle,
+            curvature: p.curvature,
+            t,
+            profile: p,
+        }
+    }
+
+    /// Lateral position of node `i` in S.
+    fn node_y(&self, i: usize) -> T {
+        let (qy, qz) = (self.table.y[i.min(N - 1)], -self.table.z[i.min(N - 1)]);
+        qy * self.cos_a - qz * self.sin_a + self.ty
+    }
+
+    /// Places the rail: top at z = 0, gauge face at y_S = gauge/2 (see module docs).
+    pub fn place(table: &'a ProfileTable<T, N>, setup: &TrackSetup<T>) -> Result<Self, Error> {
+        table.validate()?;
+        if table.kind != ProfileKind::Rail {
+            return Err(Error::BadProfile("rail table expected"));
+        }
+        let mut r = Self::raw(table, setup.cant);
+        let n = table.len;
+        // highest node
+        let mut k_top = 0;
+        let mut z_top = r.at(T::ZERO).z;
+        for i in 1..n {
+            let z = r.at(T::from_usize(i)).z;
+            if z > z_top {
+                z_top = z;
+                k_top = i;
+            }
+        }
+        // refine by golden section on [k-1, k+1]
+        let lo = T::from_usize(k_top.saturating_sub(1));
+        let hi = T::from_usize((k_top + 1).min(n - 1));
+        let t_top = golden_max(|t| r.at(t).z, lo, hi, 60);
+        z_top = r.at(t_top).z;
+        // gauge point: walk from the top towards the track-centre side (decreasing index)
+        let target = z_top - setup.gauge_depth;
+        let mut k = k_top;
+        let mut found = false;
+        for _ in 0..n {
+            if k == 0 {
+                break;
+            }
+            if r.at(T::from_usize(k - 1)).z <= target {
+                found = true;
+                k -= 1;
+                break;
+            }
+            k -= 1;
+        }
+        if !found {
+            return Err(Error::BadProfile(
+                "rail profile does not reach the gauge depth on the gauge side",
+            ));
+        }
+        let tk = T::from_usize(k);
+        let f0 = r.at(tk).z - target;
+        let f1 = r.at(tk + T::ONE).z - target;
+        let u = illinois(|u| r.at(tk + u).z - target, f0, f1, 60, math::c(1e-12));
+        let y_gauge = r.at(tk + u).y;
+        r.ty = setup.gauge * T::HALF - y_gauge;
+        r.tz = -z_top;
+        Ok(r)
+    }
+
+    /// Translation (y, z) applied after the cant rotation, mm.
+    pub fn translation(&self) -> (T, T) {
+        (self.ty, self.tz)
+    }
+}
+
+/// A point of the wheel's lowest-point curve in the side frame S.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct WheelPoint<T> {
+    /// Lateral position y_S, mm.
+    pub y: T,
+    /// Height z_S, mm.
+    pub z: T,
+    /// Longitudinal position x of the lowest point (nonzero with yaw), mm.
+    pub x: T,
+    /// Surface tilt (contact-angle sign, track frame), rad.
+    pub angle: T,
+    /// Cross-section curvature, convex (towards the rail) positive, 1/mm.
+    pub curvature: T,
+    /// Rolling radius: distance of the point from the axle, mm.
+    pub radius: T,
+    /// Curve parameter (fractional node index).
+    pub t: T,
+    /// The point in the wheel profile file's coordinates.
+    pub profile: CurvePoint<T>,
+}
+
+/// The analysed wheel placed in the side frame S.
+#[derive(Clone, Copy, Debug)]
+pub struct PlacedWheel<'a, T, const N: usize> {
+    /// The profile table.
+    pub table: &'a ProfileTable<T, N>,
+    u_off: T,
+    r0: T,
+    cphi: T,
+    sphi: T,
+    cpsi: T,
+    spsi: T,
+    theta_norm: T,
+    theta0: T,
+    /// Lateral position of the wheelset centre in S, mm.
+    pub cy: T,
+    /// Height of the wheelset centre (axle) in S, mm.
+    pub cz: T,
+}
+
+impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
+    fn new(
+        table: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+    ) -> Result<Self, Error> {
+        table.validate()?;
+        if table.kind != ProfileKind::Wheel {
+            return Err(Error::BadProfile("wheel table expected"));
+        }
+        let s: T = side.sign();
+        let phi = s * pose.roll;
+        let psi = s * pose.yaw;
+        let (cpsi, spsi) = (math::cos(psi), math::sin(psi));
+        let (cphi, sphi) = (math::cos(phi), math::sin(phi));
+        let a = cpsi;
+        let b = sphi * spsi;
+        Ok(PlacedWheel {
+            table,
+            u_off: setup.back_to_back * T::HALF - setup.flange_back_pos,
+            r0: setup.r0,
+            cphi,
+            sphi,
+            cpsi,
+            spsi,
+            theta_norm: math::hypot(a, b),
+            theta0: math::atan2(b, a),
+            cy: s * pose.dy,
+            cz: T::ZERO,
+        })
+    }
+
+    /// The lowest wheel point for profile parameter `t`.
+    pub fn at(&self, t: T) -> WheelPoint<T> {
+        let p = self.table.point(t);
+        let u = p.y + self.u_off;
+        let r = self.r0 + p.z;
+        let (cb, sb) = (math::cos(p.angle), math::sin(p.angle));
+        // cos ψ sin θ − sin φ sin ψ cos θ = −(sβ/cβ) cos φ sin ψ
+        let num = -sb * self.cphi * self.spsi;
+        let den = cb * self.theta_norm;
+        let ratio = if math::abs(num) < math::abs(den) {
+            num / den
+        } else if num * den >= T::ZERO {
+            T::ONE
+        } else {
+            -T::ONE
+        };
+        let theta = self.theta0 + math::asin(ratio);
+        let (st, ct) = (math::sin(theta), math::cos(theta));
+        let x1 = r * st;
+        let y1 = u * self.cphi + r * ct * self.sphi;
+        let z1 = u * self.sphi - r * ct * self.cphi;
+        // outward normal × cos β: (sθ cβ, −sβ, −cθ cβ)
+        let (nx, ny, nz) = (st * cb, -sb, -ct * cb);
+        let ny1 = ny * self.cphi - nz * self.sphi;
+        let nz1 = ny * self.sphi + nz * self.cphi;
+        let ny2 = nx * self.spsi + ny1 * self.cpsi;
+        WheelPoint {
+            y: x1 * self.spsi + y1 * self.cpsi + self.cy,
+            z: z1 + self.cz,
+            x: x1 * self.cpsi - y1 * self.spsi,
+            angle: math::atan2(ny2, -nz1),
+            curvature: -p.curvature,
+            radius: r,
+            t,
+            profile: p,
+        }
+    }
+}
+
+/// Golden-section maximisation of `f` on [lo, hi] (bounded iterations).
+fn golden_max<T: Real, F: Fn(T) -> T>(f: F, lo: T, hi: T, iters: usize) -> T {
+    let g = math::c::<T>(0.618_033_988_749_894_8);
+    let (mut a, mut b) = (lo, hi);
+    let mut c = b - g * (b - a);
+    let mut d = a + g * (b - a);
+    let (mut fc, mut fd) = (f(c), f(d));
+    for _ in 0..iters {
+        if fc > fd {
+            b = d;
+            d = c;
+            fd = fc;
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            a = c;
+            c = d;
+            fc = fd;
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    (a + b) * T::HALF
+}
+
+/// Finds the curve parameter where a monotone non-decreasing function of the parameter (lateral
+/// position) equals `target`, with a node pointer `k` that only moves forward. Returns the
+/// parameter, or `None` if outside the curve.
+fn solve_forward<T: Real, F: Fn(T) -> T>(
+    f: &F,
+    len: usize,
+    k: &mut usize,
+    fk: &mut (T, T),
+    target: T,
+    tol: T,
+) -> Option<T> {
+    if len < 2 {
+        return None;
+    }
+    // fk = (f(k), f(k+1)) cached
+    for _ in 0..len {
+        if fk.1 >= target || *k + 2 >= len {
+            break;
+        }
+        *k += 1;
+        fk.0 = fk.1;
+        fk.1 = f(T::from_usize(*k + 1));
+    }
+    if target < fk.0 || target > fk.1 {
+        return None;
+    }
+    let tk = T::from_usize(*k);
+    let u = illinois(
+        |u| f(tk + u) - target,
+        fk.0 - target,
+        fk.1 - target,
+        40,
+        tol,
+    );
+    Some(tk + u)
+}
+
+/// One wheel on its rail at a given wheelset pose: placed profiles and the vertical gap on a
+/// uniform lateral grid (capacity `M` grid points), with the wheel lowered to touch.
+#[derive(Clone, Debug)]
+pub struct WheelRail<'a, T, const N: usize, const M: usize> {
+    /// Analysed side.
+    pub side: Side,
+    /// Track and wheelset constants.
+    pub setup: TrackSetup<T>,
+    /// Wheelset pose (track frame).
+    pub pose: WheelsetPose<T>,
+    /// The placed rail.
+    pub rail: PlacedRail<'a, T, N>,
+    /// The placed wheel, touching (`cz` set so that min gap = 0).
+    pub wheel: PlacedWheel<'a, T, N>,
+    /// Number of grid points used.
+    pub n: usize,
+    /// Lateral position y_S of grid point 0, mm.
+    pub y0: T,
+    /// Grid step, mm.
+    pub dy: T,
+    /// Vertical gap f_v(y_j) ≥ 0 of the touching profiles, mm (min 0).
+    pub gap: [T; M],
+    /// Rail curve parameter at y_j.
+    pub rail_t: [T; M],
+    /// Wheel curve parameter at y_j.
+    pub wheel_t: [T; M],
+    /// Rail surface tilt α(y_j), rad (track-frame contact-angle sign).
+    pub rail_angle: [T; M],
+    /// Longitudinal position of the wheel's lowest point at y_j, mm (yaw).
+    pub wheel_x: [T; M],
+    /// Rigid contact point (refined argmin of the gap), y_S, mm.
+    pub y_rigid: T,
+    /// Raw minimum of Z_wheel − Z_rail with the wheelset centre at height 0 (= −cz), mm.
+    pub raw_min: T,
+}
+
+impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
+    /// Places one wheel on its rail (single-wheel mode, roll given) and computes the touching gap
+    /// on a uniform lateral grid of step `grid_step` (mm; enlarged to fit `M` points if needed)
+    /// over the lateral range common to both profiles.
+    ///
+    /// Errors: invalid tables or inputs (`BadProfile`, `NonFinite`, `OutOfRange`), no lateral
+    /// overlap of the profiles (`NoContact`), `M < 8` (`GridTooSmall`).
+    pub fn place(
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+        grid_step: T,
+    ) -> Result<Self, Error> {
+        setup.check()?;
+        pose.check()?;
+        crate::error::check_positive(grid_step, "grid_step")?;
+        if M < 8 {
+            return Err(Error::GridTooSmall("gap grid capacity M < 8"));
+        }
+        let prail = PlacedRail::place(rail, setup)?;
+        let pwheel = PlacedWheel::new(wheel, setup, pose, side)?;
+        let mut g = WheelRail {
+            side,
+            setup: *setup,
+            pose: *pose,
+            rail: prail,
+            wheel: pwheel,
+            n: 0,
+            y0: T::ZERO,
+            dy: grid_step,
+            gap: [T::ZERO; M],
+            rail_t: [T::ZERO; M],
+            wheel_t: [T::ZERO; M],
+            rail_angle: [T::ZERO; M],
+            wheel_x: [T::ZERO; M],
+            y_rigid: T::ZERO,
+            raw_min: T::ZERO,
+        };
+        g.compute()?;
+        Ok(g)
+    }
+
+    fn compute(&mut self) -> Result<(), Error> {
+        let rl = self.rail.table.len;
+        let wl = self.wheel.table.len;
+        let rail = self.rail;
+        let wheel = self.wheel;
+        let fy_r = |t: T| rail.at(t).y;
+        let fy_w = |t: T| wheel.at(t).y;
+        let r_lo = rail.node_y(0);
+        let r_hi = rail.node_y(rl - 1);
+        let w_lo = fy_w(T::ZERO);
+        let w_hi = fy_w(T::from_usize(wl - 1));
+        if !(math::is_finite(w_lo) && math::is_finite(w_hi)) {
+            return Err(Error::NonFinite("wheel placement"));
+        }
+        let lo = math::max(r_lo, w_lo);
+        let hi = math::min(r_hi, w_hi);
+        if !math::is_finite(hi - lo) || hi - lo <= math::c::<T>(4.0) * self.dy {
+            return Err(Error::NoContact);
+        }
+        let mut step = self.dy;
+        let mut n = T::to_f64((hi - lo) / step) as usize + 1;
+        if n > M {
+            n = M;
+            step = (hi - lo) / T::from_usize(M - 1);
+        }
+        self.n = n;
+        self.dy = step;
+        self.y0 = lo;
+        let tol = math::c::<T>(1e-11) + math::c::<T>(8.0) * T::EPSILON * math::abs(hi);
+        let (mut kr, mut kw) = (0usize, 0usize);
+        let mut fr = (fy_r(T::ZERO), fy_r(T::ONE));
+        let mut fw = (fy_w(T::ZERO), fy_w(T::ONE));
+        let mut jmin = 0usize;
+        let mut gmin = T::MAX;
+        for j in 0..n {
+            let y = lo + T::from_usize(j) * step;
+            let y = math::clamp(y, lo, hi);
+            let tr = solve_forward(&fy_r, rl, &mut kr, &mut fr, y, tol)
+                .ok_or(Error::BadProfile("rail not monotone in y"))?;
+            let tw = solve_forward(&fy_w, wl, &mut kw, &mut fw, y, tol)
+                .ok_or(Error::BadProfile("wheel not monotone in y"))?;
+            let pr = rail.at(tr);
+            let pw = wheel.at(tw);
+            let gj = pw.z - pr.z;
+            if !math::is_finite(gj) {
+                return Err(Error::NonFinite("gap"));
+            }
+            self.gap[j] = gj;
+            self.rail_t[j] = tr;
+            self.wheel_t[j] = tw;
+            self.rail_angle[j] = pr.angle;
+            self.wheel_x[j] = pw.x;
+            if gj < gmin {
+                gmin = gj;
+                jmin = j;
+            }
+        }
+        // parabolic refinement of the minimum
+        let (mut fmin, mut p) = (gmin, T::ZERO);
+        if jmin > 0 && jmin + 1 < n {
+            let (a, b, c) = (self.gap[jmin - 1], self.gap[jmin], self.gap[jmin + 1]);
+            let den = a - T::TWO * b + c;
+            if den > T::ZERO {
+                p = math::clamp((a - c) / (T::TWO * den), -T::HALF, T::HALF);
+                fmin = b - (a - c) * p * math::c::<T>(0.25);
+            }
+        }
+        for j in 0..n {
+            self.gap[j] = math::max(self.gap[j] - fmin, T::ZERO);
+        }
+        self.raw_min = fmin;
+        self.wheel.cz = -fmin;
+        self.y_rigid = lo + (T::from_usize(jmin) + p) * step;
+        Ok(())
+    }
+
+    /// Lateral position y_S of grid point j, mm.
+    #[inline]
+    pub fn y_at(&self, j: usize) -> T {
+        self.y0 + T::from_usize(j) * self.dy
+    }
+
+    /// Rail curve parameter at lateral position `y` (S), by bracketing from the grid and
+    /// regula falsi. Clamped to the grid range.
+    pub fn rail_t_at(&self, y: T) -> T {
+        let (j, _) = self.grid_index(y);
+        let (t0, t1) = (self.rail_t[j], self.rail_t[j + 1]);
+        let rail = self.rail;
+        let f = |t: T| rail.at(t).y - y;
+        let u = illinois(|u| f(t0 + u * (t1 - t0)), f(t0), f(t1), 40, math::c(1e-11));
+        t0 + u * (t1 - t0)
+    }
+
+    /// Wheel curve parameter at lateral position `y` (S), touching configuration.
+    pub fn wheel_t_at(&self, y: T) -> T {
+        let (j, _) = self.grid_index(y);
+        let (t0, t1) = (self.wheel_t[j], self.wheel_t[j + 1]);
+        let wheel = self.wheel;
+        let f = |t: T| wheel.at(t).y - y;
+        let u = illinois(|u| f(t0 + u * (t1 - t0)), f(t0), f(t1), 40, math::c(1e-11));
+        t0 + u * (t1 - t0)
+    }
+
+    /// Grid interval index j (0 ≤ j ≤ n−2) and local fraction for lateral position `y`.
+    pub fn grid_index(&self, y: T) -> (usize, T) {
+        let x = if self.dy > T::ZERO {
+            (y - self.y0) / self.dy
+        } else {
+            T::ZERO
+        };
+        let last = self.n.saturating_sub(2);
+        let x = if math::is_finite(x) {
+            math::clamp(x, T::ZERO, T::from_usize(last))
+        } else {
+            T::ZERO
+        };
+        let j = (T::to_f64(math::floor(x)) as usize).min(last);
+        (j, x - T::from_usize(j))
+    }
+
+    /// Linear interpolation of a grid array at lateral position `y`.
+    pub fn interp(&self, arr: &[T; M], y: T) -> T {
+        let (j, u) = self.grid_index(y);
+        arr[j] + u * (arr[j + 1] - arr[j])
+    }
+
+    /// Height of the wheelset centre (axle) in the track frame at touching, mm.
+    pub fn axle_height(&self) -> T {
+        self.wheel.cz
+    }
+}
+
+/// Result of the two-wheel equilibrium (§7.2 step 5).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct Equilibrium<T> {
+    /// Roll angle about +x_T at which both wheels touch at the same axle height, rad.
+    pub roll: T,
+    /// Axle height at that roll, mm.
+    pub axle_height: T,
+    /// Height mismatch of the two wheels at the returned roll, mm.
+    pub residual: T,
+    /// Iterations used.
+    pub iterations: usize,
+    /// `true` if |residual| < 1e-9 mm (f64) / 1e-4 mm (f32) within the iteration cap.
+    pub converged: bool,
+}
+
+/// Two-wheel vertical/roll equilibrium (§7.2 step 5): the roll φ for which the left and right
+/// wheels touch their rails at the same axle height, for given lateral shift and yaw. Bracket
+/// φ ∈ [−0.05, 0.05] rad, Illinois regula falsi, at most 60 iterations. The same tables are used
+/// for both sides (right-side profiles mirrored for the left, as CONTACT does).
+pub fn equilibrium_roll<T: Real, const N: usize, const M: usize>(
+    rail: &ProfileTable<T, N>,
+    wheel: &ProfileTable<T, N>,
+    setup: &TrackSetup<T>,
+    dy: T,
+    yaw: T,
+    grid_step: T,
+) -> Result<Equilibrium<T>, Error> {
+    let height = |roll: T, side: Side| -> Result<T, Error> {
+        let pose = WheelsetPose { dy, yaw, roll };
+        let g = WheelRail::<T, N, M>::place(rail, wheel, setup, &pose, side, grid_step)?;
+        Ok(g.axle_height())
+    };
+    let f = |roll: T| -> Result<T, Error> {
+        Ok(height(roll, Side::Left)? - height(roll, Side::Right)?)
+    };
+    let (mut a, mut b) = (math::c::<T>(-0.05), math::c::<T>(0.05));
+    let (mut fa, mut fb) = (f(a)?, f(b)?);
+    if (fa > T::ZERO) == (fb > T::ZERO) {
+        return Err(Error::OutOfRange(
+            "no roll in [-0.05, 0.05] rad balances the wheels",
+        ));
+    }
+    let tol = if T::EPSILON < math::c(1e-10) {
+        math::c::<T>(1e-9)
+    } else {
+        math::c::<T>(1e-4)
+    };
+    let mut side = 0i8;
+    let mut x = a;
+    let mut fx = fa;
+    let mut it = 0;
+    for i in 0..60 {
+        it = i + 1;
+        x = (a * fb - b * fa) / (fb - fa);
+        if !(x > a && x < b) {
+            x = (a + b) * T::HALF;
+        }
+        fx = f(x)?;
+        if math::abs(fx) < tol {
+            break;
+        }
+        if (fx > T::ZERO) == (fb > T::ZERO) {
+            b = x;
+            fb = fx;
+            if side == -1 {
+                fa *= T::HALF;
+            }
+            side = -1;
+        } else {
+            a = x;
+            fa = fx;
+            if side == 1 {
+                fb *= T::HALF;
+            }
+            side = 1;
+        }
+    }
+    let h = height(x, Side::Left)?;
+    Ok(Equilibrium {
+        roll: x,
+        axle_height: h,
+        residual: fx,
+        iterations: it,
+        converged: math::abs(fx) < tol,
+    })
+}

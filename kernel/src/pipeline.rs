@@ -1,0 +1,302 @@
+//! The default per-patch pipeline: STRIPES normal contact → non-elliptic adaptation → FASTSIM or
+//! FaStrip → KTH wear, on a caller-owned, const-constructible [`Workspace`].
+//!
+//! Input: the fine lateral samples of one contact patch in its contact frame ([`StripSample`], see
+//! [`samples_from_arrays`] for the adapter from geometry's per-patch arrays), the patch's normal
+//! load and creepages. Each region (connected component of the STRIPES contact set) gets its own
+//! strips (32 by default, ≥ 8) and cells (32 along x), its own adaptation and tangential solve; the
+//! totals are summed. Per-cell results go only to the caller's [`CellSink`] (strip index = the
+//! global strip index of [`StripSet`]); wear per strip accumulates in the workspace.
+//!
+//! Defaults ([`PipelineConfig::recommended`]): STRIPES `EpsSmoothed(2 mm)` + `PatchFraction(0.25)`
+//! (methods.md §6 item 11), Ayasse–Chollet `StripA` reference ellipses with FaStrip (§5.3), FaStrip's
+//! `Contact5` large-spin rule and μp_n slip zone (§4.2), 32 strips × 32 cells per region (§0.5).
+
+use crate::adapt::{self, Adaptation, LocalEllipse, Method};
+use crate::error::{check_positive, Error};
+use crate::math;
+use crate::patch::{CellOut, CellSink, Creepage, SemiEllipticStrips, Totals, TractionBound};
+use crate::stripes::{StripSample, StripSet, Stripes, StripesConfig, StripesSolution};
+use crate::wear::{StripWear, WearMap};
+use crate::{Material, Real};
+
+/// Pipeline options.
+#[derive(Clone, Copy, Debug)]
+pub struct PipelineConfig<T> {
+    /// STRIPES options.
+    pub stripes: StripesConfig<T>,
+    /// Flexibility / reference-ellipse approach.
+    pub adapt: Adaptation<T>,
+    /// Tangential method.
+    pub method: Method,
+    /// FASTSIM traction bound; `None` = the approach's default (§3.2).
+    pub bound: Option<TractionBound<T>>,
+    /// Strips per region (≥ 8).
+    pub strips_per_region: usize,
+    /// Coefficient of friction μ.
+    pub mu: T,
+    /// Rolling speed V, mm/s (for the wear map's sliding velocity).
+    pub speed: T,
+    /// Wear map.
+    pub wear: WearMap<T>,
+}
+
+impl<T: Real> PipelineConfig<T> {
+    /// The kernel's defaults (module docs) with friction `mu` and speed `speed` (mm/s).
+    pub fn recommended(mu: T, speed: T) -> Self {
+        Self {
+            stripes: StripesConfig::recommended(),
+            adapt: Adaptation::recommended(),
+            method: Method::Fastrip,
+            bound: None,
+            strips_per_region: crate::stripes::DEFAULT_STRIPS_PER_REGION,
+            mu,
+            speed,
+            wear: WearMap::kth(),
+        }
+    }
+}
+
+/// Per-region result.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct RegionResult<T> {
+    /// Lateral limits of the region, mm (contact frame).
+    pub y_lo: T,
+    /// Upper lateral limit, mm.
+    pub y_hi: T,
+    /// First global strip index and number of strips.
+    pub first: usize,
+    /// Number of strips.
+    pub count: usize,
+    /// Normal force, N.
+    pub load: T,
+    /// Peak pressure, MPa.
+    pub pmax: T,
+    /// Contact area, mm².
+    pub area: T,
+    /// Tangential totals (F_x, F_y on the wheel, N; M_z about the frame origin, N·mm; cell counts).
+    pub totals: Totals<T>,
+    /// Largest strip wear depth per passage, mm.
+    pub wear_max: T,
+}
+
+/// Result of one patch.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PatchResult<T, const NR: usize> {
+    /// Regions.
+    pub regions: [RegionResult<T>; NR],
+    /// Number of regions.
+    pub n_regions: usize,
+    /// Sum over regions.
+    pub totals: Totals<T>,
+    /// Normal approach of the STRIPES solution (from the deepest sample), mm.
+    pub approach: T,
+    /// Total contact area, mm².
+    pub area: T,
+    /// Peak pressure, MPa.
+    pub pmax: T,
+    /// STRIPES load-control steps (fine passes + strip re-solve).
+    pub iterations: u32,
+    /// All STRIPES solves converged.
+    pub converged: bool,
+}
+
+/// Caller-owned workspace: `NS` fine samples, `NR` regions, `S` strips and `C` cells per region,
+/// `SS` strips in total (≥ NR·8; `S·NR` to give every region its full count).
+#[derive(Clone, Debug)]
+pub struct Workspace<
+    T,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+> {
+    /// STRIPES solver state.
+    pub stripes: Stripes<T, NS, 8, NR>,
+    /// Strips of the last call.
+    pub set: StripSet<T, SS, NR>,
+    /// Wear per strip of the last call (global strip index).
+    pub wear: StripWear<T, SS>,
+    local: [LocalEllipse<T>; S],
+}
+
+/// The default workspace: 256 samples, 4 regions, 32 strips × 32 cells per region.
+pub type DefaultWorkspace<T> = Workspace<T, 256, 4, 32, 32, 128>;
+
+impl<
+        T: Real,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > Workspace<T, NS, NR, S, C, SS>
+{
+    /// Empty workspace (const: can live in a `static`).
+    pub const fn new() -> Self {
+        Self {
+            stripes: Stripes::new(),
+            set: StripSet::new(),
+            wear: StripWear::new(),
+            local: [LocalEllipse {
+                n_over_m: T::ZERO,
+                a_tilde: T::ZERO,
+            }; S],
+        }
+    }
+}
+
+impl<
+        T: Real,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > Default for Workspace<T, NS, NR, S, C, SS>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Forwards cells with the global strip index and accumulates wear.
+struct RegionSink<'a, T, K, const SS: usize> {
+    inner: &'a mut K,
+    wear: &'a mut StripWear<T, SS>,
+    map: &'a WearMap<T>,
+    first: usize,
+    speed: T,
+    dx: T,
+}
+
+impl<T: Real, K: CellSink<T>, const SS: usize> CellSink<T> for RegionSink<'_, T, K, SS> {
+    #[inline]
+    fn cell(&mut self, j: usize, i: usize, out: &CellOut<T>) {
+        let g = self.first + j;
+        if out.slip {
+            let s = math::hypot(out.sx, out.sy);
+            self.wear
+                .add_cell(self.map, g, out.pn, s, self.speed, self.dx);
+        }
+        self.inner.cell(g, i, out);
+    }
+}
+
+/// Converts geometry's per-patch arrays (sample coordinate s_i, width, normal separation f_n,
+/// curvatures A, B) into STRIPES samples in `out`; returns the count. x_c = 0 (yaw's longitudinal
+/// asymmetry is not modelled, methods.md §7.3).
+pub fn samples_from_arrays<T: Real>(
+    s: impl Fn(usize) -> T,
+    width: &[T],
+    f_n: &[T],
+    a_long: &[T],
+    b_lat: &[T],
+    n: usize,
+    out: &mut [StripSample<T>],
+) -> Result<usize, Error> {
+    let n = n
+        .min(width.len())
+        .min(f_n.len())
+        .min(a_long.len())
+        .min(b_lat.len());
+    if n > out.len() {
+        return Err(Error::OutOfRange("samples exceed capacity"));
+    }
+    for i in 0..n {
+        out[i] = StripSample {
+            y: s(i),
+            dy: width[i],
+            z: f_n[i],
+            curv_a: a_long[i],
+            curv_b: b_lat[i],
+            xc: T::ZERO,
+        };
+    }
+    Ok(n)
+}
+
+/// Runs the pipeline on one patch: `samples` (fine lateral samples in the contact frame), normal
+/// load `load` (N), creepages `cr`; every contact cell goes to `sink` (`&mut ()` for none).
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub fn solve_patch<
+    T: Real,
+    K: CellSink<T>,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    sink: &mut K,
+) -> Result<PatchResult<T, NR>, Error> {
+    check_positive(cfg.mu, "mu")?;
+    check_positive(cfg.speed, "speed")?;
+    cr.check()?;
+    cfg.wear.validate()?;
+    let sol: StripesSolution<T, NR> = ws.stripes.solve(samples, load, mat, &cfg.stripes)?;
+    let per = cfg.strips_per_region.min(S);
+    ws.stripes.layout(&sol, samples, load, per, &mut ws.set)?;
+    ws.wear.clear();
+    let bound = cfg.bound.unwrap_or(cfg.adapt.default_bound());
+    let mut res = PatchResult {
+        regions: [RegionResult::default(); NR],
+        n_regions: ws.set.n_regions,
+        totals: Totals::default(),
+        approach: ws.set.delta,
+        area: ws.set.total_area,
+        pmax: ws.set.total_pmax,
+        iterations: sol.iterations + ws.set.iterations,
+        converged: sol.converged && ws.set.converged,
+    };
+    for r in 0..ws.set.n_regions {
+        let reg = ws.set.regions[r];
+        let patch =
+            adapt::region_patch::<T, S, C, SS, NR>(&ws.set, r, &cfg.adapt, mat, &mut ws.local)?;
+        let mut rs = RegionSink {
+            inner: sink,
+            wear: &mut ws.wear,
+            map: &cfg.wear,
+            first: reg.first,
+            speed: cfg.speed,
+            dx: patch.dx,
+        };
+        let t = adapt::solve_tangential(
+            &patch,
+            &SemiEllipticStrips,
+            cr,
+            cfg.method,
+            bound,
+            cfg.mu,
+            &mut rs,
+        )?;
+        let mut wmax = T::ZERO;
+        for j in reg.first..reg.first + reg.count {
+            if let Some(d) = ws.wear.depth.get(j) {
+                wmax = math::max(wmax, *d);
+            }
+        }
+        res.regions[r] = RegionResult {
+            y_lo: reg.y_lo,
+            y_hi: reg.y_hi,
+            first: reg.first,
+            count: reg.count,
+            load: reg.load,
+            pmax: reg.pmax,
+            area: reg.area,
+            totals: t.total,
+            wear_max: wmax,
+        };
+        res.totals.merge(&t.total);
+    }
+    Ok(res)
+}

@@ -1,0 +1,1204 @@
+//! STRIPES semi-Hertzian normal contact (Ayasse & Chollet 2005; methods.md §6, filter §5.3).
+//!
+//! # Input
+//! A fine lateral sampling of one wheel's contact zone in the contact frame, one [`StripSample`] per
+//! lateral position (ascending `y`): rigid normal separation `z` (mm, any offset — the minimum is
+//! subtracted), longitudinal gap curvature `curv_a` = A (1/mm, > 0), unfiltered lateral gap curvature
+//! `curv_b` = B (1/mm, any sign), strip width `dy` and longitudinal position `xc` of the strip's rigid
+//! contact (mm). Geometry's region output converts into this (see `crate::pipeline`).
+//!
+//! # Model (per sample i, §6 steps 1–6)
+//! B is passed through the zero-phase Boussinesq filter ([`boussinesq_filter`], §5.3) of length l₀
+//! ([`L0Mode`]) and clamped to ≥ `b_min`; then m_i, n_i, r_i = Hertz coefficients of (A_i, B_f,i)
+//! ([`crate::hertz::coefficients`]), Ã_i = (n_i/m_i)² B_f,i, ε_i = n_i² B_f,i/(r_i(A_i + B_f,i)),
+//! h_i = max(0, e_i(δ − z_ref,i) − (z_i − z_ref,i)) with e_i per [`HMode`], a_i = √(h_i/Ã_i),
+//! p_max,i = (2E*/(π n_i r_i ε_i)) h_i/a_i, N = Σ E* h_i δy_i/(n_i r_i ε_i) (E/(1−ν²) = 2E* for two
+//! identical bodies). On a Hertzian gap (constant A, B, z = B y²) every mode reproduces Hertz exactly.
+//!
+//! # Regions and continuity (§6 item 8) — the blending law of this implementation
+//! The reference level z_ref of each sample comes from **basins**: the local minima of z lying below
+//! the approach δ (the rigid overlap), separated by saddles (the maximum of z between two consecutive
+//! minima). Each link between neighbouring basins carries a weight
+//!
+//! θ = smoothstep(clamp(min(z_s − e_s δ, z_s − max(z_min,L, z_min,R)) / (`blend`·δ), 0, 1)),
+//!
+//! i.e. θ = 0 (merged) while the saddle is still inside the contact set of the one-region model
+//! (z_s < e_s δ) or the saddle has no prominence, rising smoothly to 1 (separate) as the saddle
+//! leaves the contact set by more than `blend`·δ. Basin k then uses
+//!
+//! z_ref,k = min_j ( z_min,j + θ_kj δ ),  θ_kj = max of θ over the links between k and j,
+//!
+//! which equals the global minimum of its merged cluster at θ = 0, its own minimum at θ = 1 (since
+//! z_min,k < δ) and moves continuously in between; it is transitive, so a basin that appears (a new
+//! minimum/saddle pair has zero prominence, θ = 0) or enters the overlap (its contribution starts at
+//! h = 0) changes nothing discontinuously. The partition is iterated (§6 item 8): pass 1 treats all
+//! samples as one region, passes 2 and 3 recompute basins and θ from the previous approach (always 3
+//! passes when there is more than one basin, so the result is a continuous composition). With
+//! [`HMode::Eps0`], ε₀ of a basin is ε at the minimum that sets its z_ref (it can jump when that
+//! minimum changes; seed-literal option only). [`L0Mode::PatchFraction`] uses one l₀ per basin from its
+//! half-width w, blended the same way (w_eff,k = max_j (1 − θ_kj) w_kj, w_kj = half-span of the contact
+//! sets of basins k…j).
+//!
+//! The output **regions** (patches) are the connected components of the final contact set on the
+//! samples; each gets its own evenly spaced strips ([`Stripes::layout`], ≥ [`MIN_STRIPS_PER_REGION`])
+//! on which the load control is solved again (§0.5 layout).
+//!
+//! # Load control (§6 item 7)
+//! N(δ) = Σ s_i (δ − t_i)₊ is continuous, piecewise linear and convex in the common approach δ. It is
+//! solved exactly by Newton's method from the right end of the bracket [t_min, t_min + N/s_min]
+//! (monotone on a convex function, exact once the active set is right), safeguarded by bisection,
+//! at most [`MAX_NEWTON`] steps; iterations and convergence are reported.
+
+use crate::error::{check_finite, check_positive, Error};
+use crate::hertz;
+use crate::math::{self, c};
+use crate::{Material, Real};
+
+/// Maximum Newton/bisection steps of one load-control solve.
+pub const MAX_NEWTON: u32 = 64;
+/// Region-partition passes (§6 item 8: "cap the passes: 3").
+pub const MAX_PASSES: u32 = 3;
+/// Fewest strips a disjoint region may get (§0.5, §6 item 8).
+pub const MIN_STRIPS_PER_REGION: usize = 8;
+/// Default strips per region (§0.5).
+pub const DEFAULT_STRIPS_PER_REGION: usize = 32;
+
+/// One fine lateral sample of the rigid gap in the contact frame (input of [`Stripes::solve`]).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StripSample<T> {
+    /// Lateral position y in the contact plane, mm (strictly ascending over the samples).
+    pub y: T,
+    /// Width the sample represents, mm (> 0).
+    pub dy: T,
+    /// Rigid normal separation of the undeformed profiles, mm (any offset).
+    pub z: T,
+    /// Longitudinal gap curvature A = cos δ/(2R), 1/mm (> 0).
+    pub curv_a: T,
+    /// Lateral gap curvature B (unfiltered, in the contact plane), 1/mm (any sign).
+    pub curv_b: T,
+    /// Longitudinal position of the strip's rigid contact x_c, mm (0 without yaw).
+    pub xc: T,
+}
+
+/// Strip-depth mode `h_mode` (§6 step 3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum HMode<T> {
+    /// Seed literal: e_i = ε₀ of the region's deepest strip.
+    Eps0,
+    /// e_i = local ε_i.
+    EpsLocal,
+    /// e_i = ε_i passed through the zero-phase filter with this length l_ε (mm).
+    EpsSmoothed(T),
+}
+
+/// Curvature-filter length `l0_mode` (§6 item 9, §5.3).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum L0Mode<T> {
+    /// No filter (l₀ = 0; B is only clamped).
+    Off,
+    /// l₀ = semi-width b of the Hertz ellipse at the deepest sample under the target load.
+    HertzB,
+    /// l₀ = f·w per basin, w = half the lateral extent of its contact set in an unfiltered pass.
+    PatchFraction(T),
+}
+
+/// STRIPES options.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StripesConfig<T> {
+    /// Strip-depth mode.
+    pub h_mode: HMode<T>,
+    /// Curvature-filter length.
+    pub l0_mode: L0Mode<T>,
+    /// Blending depth as a fraction of the approach δ (dimensionless, ≥ 0; 0 = hard switch).
+    pub blend: T,
+    /// Lower clamp of the filtered lateral curvature, 1/mm (§5.3: 1e-6).
+    pub b_min: T,
+}
+
+impl<T: Real> StripesConfig<T> {
+    /// The recommended defaults (§6 item 11): `EpsSmoothed(2 mm)`, `PatchFraction(0.25)`,
+    /// blending depth 0.25·δ, B_f ≥ 1e-6 1/mm.
+    pub fn recommended() -> Self {
+        Self {
+            h_mode: HMode::EpsSmoothed(c(2.0)),
+            l0_mode: L0Mode::PatchFraction(c(0.25)),
+            blend: c(0.25),
+            b_min: c(1e-6),
+        }
+    }
+    /// Seed B literal set: `Eps0` + `HertzB`.
+    pub fn seed_literal() -> Self {
+        Self {
+            h_mode: HMode::Eps0,
+            l0_mode: L0Mode::HertzB,
+            ..Self::recommended()
+        }
+    }
+}
+
+/// Zero-phase Boussinesq curvature filter (§5.3, eq. 25): the one-sided recursion
+/// B_f,k = B_f,k−1 + (1 − exp(−3Δs/(2l₀)))(B_k − B_f,k−1), started at B_f = B at the first point,
+/// run forward and backward and averaged. `s` = positions (mm, ascending), `l0` (mm); l₀ ≤ 0 copies.
+/// `out` receives the result; lengths are the shortest of the three slices.
+pub fn boussinesq_filter<T: Real>(s: &[T], b: &[T], l0: T, out: &mut [T]) {
+    let n = s.len().min(b.len()).min(out.len());
+    if n == 0 {
+        return;
+    }
+    if l0 <= T::ZERO {
+        out[..n].copy_from_slice(&b[..n]);
+        return;
+    }
+    let k = c::<T>(-1.5) / l0;
+    let mut last_ds = -T::ONE;
+    let mut w = T::ZERO;
+    let mut f = b[0];
+    out[0] = f;
+    for i in 1..n {
+        let ds = s[i] - s[i - 1];
+        if ds != last_ds {
+            w = T::ONE - math::exp(k * ds);
+            last_ds = ds;
+        }
+        f += w * (b[i] - f);
+        out[i] = f;
+    }
+    let mut f = b[n - 1];
+    out[n - 1] = T::HALF * (out[n - 1] + f);
+    for i in (0..n - 1).rev() {
+        let ds = s[i + 1] - s[i];
+        if ds != last_ds {
+            w = T::ONE - math::exp(k * ds);
+            last_ds = ds;
+        }
+        f += w * (b[i] - f);
+        out[i] = T::HALF * (out[i] + f);
+    }
+}
+
+/// Result of one load-control solve.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct LoadControl<T> {
+    /// Common approach δ, mm.
+    pub delta: T,
+    /// Newton/bisection steps used.
+    pub iterations: u32,
+    /// |N(δ) − N| ≤ tolerance reached.
+    pub converged: bool,
+}
+
+/// Solves Σ s_i (δ − t_i)₊ = `target` for δ (s_i > 0), exactly up to rounding (see module docs).
+/// `term(i)` returns (s_i, t_i). Relative tolerance 1e-12 (f64) / 4e-6 (f32).
+pub fn solve_piecewise_linear<T: Real>(
+    n: usize,
+    target: T,
+    term: impl Fn(usize) -> (T, T),
+) -> Result<LoadControl<T>, Error> {
+    check_positive(target, "N")?;
+    let mut t_min = T::MAX;
+    let mut s_at_min = T::ZERO;
+    for i in 0..n {
+        let (s, t) = term(i);
+        if s > T::ZERO && t < t_min {
+            t_min = t;
+            s_at_min = s;
+        }
+    }
+    if s_at_min <= T::ZERO || !math::is_finite(t_min) {
+        return Err(Error::NoContact);
+    }
+    let eval = |d: T| -> (T, T) {
+        let mut f = T::ZERO;
+        let mut slope = T::ZERO;
+        for i in 0..n {
+            let (s, t) = term(i);
+            if s > T::ZERO && d > t {
+                f += s * (d - t);
+                slope += s;
+            }
+        }
+        (f, slope)
+    };
+    let tol = if T::EPSILON < c(1e-10) {
+        c::<T>(1e-12)
+    } else {
+        c::<T>(4e-6)
+    } * target;
+    let mut lo = t_min;
+    let mut hi = t_min + target / s_at_min;
+    let mut d = hi;
+    let mut iterations = 0;
+    let mut converged = false;
+    for _ in 0..MAX_NEWTON {
+        iterations += 1;
+        let (f, slope) = eval(d);
+        let r = f - target;
+        if math::abs(r) <= tol {
+            converged = true;
+            break;
+        }
+        if r > T::ZERO {
+            hi = d;
+        } else {
+            lo = d;
+        }
+        let mut next = if slope > T::ZERO { d - r / slope } else { lo };
+        if !(next > lo && next < hi) {
+            next = T::HALF * (lo + hi);
+        }
+        if next == d {
+            converged = true;
+            break;
+        }
+        d = next;
+    }
+    Ok(LoadControl {
+        delta: d,
+        iterations,
+        converged,
+    })
+}
+
+/// A basin (local minimum of z below δ) of the fine samples.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+struct Basin<T> {
+    /// Sample index of the minimum.
+    imin: usize,
+    /// z at the minimum (normalised), mm.
+    zmin: T,
+    /// Saddle height to the next basin (z max between the two minima), mm.
+    saddle: T,
+    /// Sample index of that saddle (last sample of this basin's zone).
+    isaddle: usize,
+    /// Blending weight θ of the link to the next basin.
+    theta: T,
+    /// Reference level, mm.
+    zref: T,
+    /// ε₀ for `Eps0`.
+    eps0: T,
+    /// Half-span of the basin's contact set (for `PatchFraction`), mm; and its lateral limits.
+    ylo: T,
+    yhi: T,
+    in_contact: bool,
+}
+
+/// Summary of one output region (connected component of the contact set).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct RegionSummary<T> {
+    /// Lateral limits of the contact set (interpolated edges), mm.
+    pub y_lo: T,
+    /// Upper lateral limit, mm.
+    pub y_hi: T,
+    /// Normal force carried by the region, N.
+    pub load: T,
+    /// Largest strip peak pressure, MPa.
+    pub pmax: T,
+    /// Contact area Σ 2 a_i δy_i, mm².
+    pub area: T,
+    /// Longest strip half-length, mm.
+    pub a_max: T,
+    /// First sample index and one past the last (fine solution) or first strip and count (layout).
+    pub first: usize,
+    /// Number of samples (fine) or strips (layout).
+    pub count: usize,
+}
+
+/// Result of [`Stripes::solve`] on the fine samples.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub struct StripesSolution<T, const NR: usize> {
+    /// Common approach δ measured from the deepest sample, mm.
+    pub delta: T,
+    /// Offset subtracted from the input z (the minimum), mm.
+    pub z_offset: T,
+    /// Load-control steps, summed over all passes.
+    pub iterations: u32,
+    /// Every load-control solve converged.
+    pub converged: bool,
+    /// Partition passes of the final (filtered) solve.
+    pub passes: u32,
+    /// Number of basins in the final partition.
+    pub basins: usize,
+    /// Total normal force Σ over samples, N.
+    pub load: T,
+    /// Largest peak pressure, MPa.
+    pub pmax: T,
+    /// Total contact area, mm².
+    pub area: T,
+    /// Output regions (connected components of the contact set).
+    pub regions: [RegionSummary<T>; NR],
+    /// Number of valid entries in `regions`.
+    pub n_regions: usize,
+}
+
+/// Per-strip STRIPES result on the evenly spaced strips of each region ([`Stripes::layout`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct StripSet<T, const S: usize, const NR: usize> {
+    /// Strip centre y_j, mm.
+    pub y: [T; S],
+    /// Strip width δy_j, mm.
+    pub dy: [T; S],
+    /// Strip half-length a_j, mm (0 if the strip is out of contact).
+    pub a: [T; S],
+    /// Strip centre x_c,j, mm.
+    pub xc: [T; S],
+    /// Strip peak pressure p_max,j, MPa (semi-elliptic along x).
+    pub pmax: [T; S],
+    /// Strip depth h_j, mm.
+    pub h: [T; S],
+    /// Longitudinal curvature A_j, 1/mm.
+    pub curv_a: [T; S],
+    /// Filtered lateral curvature B_f,j, 1/mm.
+    pub curv_bf: [T; S],
+    /// Local Hertz axis ratio n_j/m_j (= b/a of the local ellipse, §5.3).
+    pub n_over_m: [T; S],
+    /// Shape-corrected longitudinal curvature Ã_j = (n_j/m_j)² B_f,j, 1/mm (a_j = √(h_j/Ã_j)).
+    pub a_tilde: [T; S],
+    /// Strip stiffness E*/(n_j r_j ε_j), MPa: strip load per unit width = stiffness · h_j.
+    pub stiffness: [T; S],
+    /// Region index of the strip.
+    pub region: [u8; S],
+    /// Number of valid strips.
+    pub n_strips: usize,
+    /// Per-region summary; `first`/`count` index the strips.
+    pub regions: [RegionSummary<T>; NR],
+    /// Number of regions.
+    pub n_regions: usize,
+    /// Approach of the strip re-solve, mm (relative to the deepest sample).
+    pub delta: T,
+    /// Total normal force, N.
+    pub total_load: T,
+    /// Largest strip peak pressure, MPa.
+    pub total_pmax: T,
+    /// Total contact area Σ 2 a_j δy_j, mm².
+    pub total_area: T,
+    /// Load-control steps of the strip re-solve.
+    pub iterations: u32,
+    /// The strip re-solve converged.
+    pub converged: bool,
+}
+
+impl<T: Real, const S: usize, const NR: usize> StripSet<T, S, NR> {
+    /// Empty set (const, for statics).
+    pub const fn new() -> Self {
+        Self {
+            y: [T::ZERO; S],
+            dy: [T::ZERO; S],
+            a: [T::ZERO; S],
+            xc: [T::ZERO; S],
+            pmax: [T::ZERO; S],
+            h: [T::ZERO; S],
+            curv_a: [T::ZERO; S],
+            curv_bf: [T::ZERO; S],
+            n_over_m: [T::ZERO; S],
+            a_tilde: [T::ZERO; S],
+            stiffness: [T::ZERO; S],
+            region: [0; S],
+            n_strips: 0,
+            regions: [RegionSummary {
+                y_lo: T::ZERO,
+                y_hi: T::ZERO,
+                load: T::ZERO,
+                pmax: T::ZERO,
+                area: T::ZERO,
+                a_max: T::ZERO,
+                first: 0,
+                count: 0,
+            }; NR],
+            n_regions: 0,
+            delta: T::ZERO,
+            total_load: T::ZERO,
+            total_pmax: T::ZERO,
+            total_area: T::ZERO,
+            iterations: 0,
+            converged: false,
+        }
+    }
+
+    /// Semi-elliptic pressure of strip `j` at longitudinal position x (mm), MPa.
+    pub fn pressure(&self, j: usize, x: T) -> T {
+        if j >= self.n_strips || self.a[j] <= T::ZERO {
+            return T::ZERO;
+        }
+        let u = (x - self.xc[j]) / self.a[j];
+        let s = T::ONE - u * u;
+        if s > T::ZERO {
+            self.pmax[j] * math::sqrt(s)
+        } else {
+            T::ZERO
+        }
+    }
+}
+
+impl<T: Real, const S: usize, const NR: usize> Default for StripSet<T, S, NR> {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// STRIPES solver with its caller-owned workspace: `NS` fine samples, `NB` basins, `NR` regions.
+#[derive(Clone, Debug)]
+pub struct Stripes<T, const NS: usize, const NB: usize, const NR: usize> {
+    y: [T; NS],
+    z: [T; NS],
+    bf: [T; NS],
+    eps: [T; NS],
+    e: [T; NS],
+    at: [T; NS],
+    kst: [T; NS],
+    nm: [T; NS],
+    zref: [T; NS],
+    hu: [T; NS],
+    tmp: [T; NS],
+    zone: [u8; NS],
+    l0: [T; NB],
+    l0_global: T,
+    n: usize,
+    delta_last: T,
+    basins: [Basin<T>; NB],
+    nb: usize,
+    e_star: T,
+}
+
+impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Default
+    for Stripes<T, NS, NB, NR>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn smoothstep<T: Real>(u: T) -> T {
+    let u = math::clamp(u, T::ZERO, T::ONE);
+    u * u * (c::<T>(3.0) - T::TWO * u)
+}
+
+impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, NB, NR> {
+    const CAPACITY_OK: () = assert!(NS >= 2 && NB >= 1 && NB <= 255 && NR >= 1);
+
+    /// Empty workspace (const: can live in a `static`).
+    pub const fn new() -> Self {
+        #[allow(clippy::let_unit_value)]
+        let _ = Self::CAPACITY_OK;
+        let b = Basin {
+            imin: 0,
+            zmin: T::ZERO,
+            saddle: T::ZERO,
+            isaddle: 0,
+            theta: T::ZERO,
+            zref: T::ZERO,
+            eps0: T::ZERO,
+            ylo: T::ZERO,
+            yhi: T::ZERO,
+            in_contact: false,
+        };
+        Self {
+            y: [T::ZERO; NS],
+            z: [T::ZERO; NS],
+            bf: [T::ZERO; NS],
+            eps: [T::ZERO; NS],
+            e: [T::ZERO; NS],
+            at: [T::ZERO; NS],
+            kst: [T::ZERO; NS],
+            nm: [T::ZERO; NS],
+            zref: [T::ZERO; NS],
+            hu: [T::ZERO; NS],
+            tmp: [T::ZERO; NS],
+            zone: [0; NS],
+            l0: [T::ZERO; NB],
+            l0_global: T::ZERO,
+            n: 0,
+            delta_last: T::ZERO,
+            basins: [b; NB],
+            nb: 0,
+            e_star: T::ZERO,
+        }
+    }
+
+    /// Number of samples of the last solve.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+    /// `true` before the first successful solve.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+    /// Strip depth h_i of sample i (mm) of the last solve (0 outside).
+    pub fn depth(&self, i: usize) -> T {
+        if i < self.n {
+            math::max(self.hu[i], T::ZERO)
+        } else {
+            T::ZERO
+        }
+    }
+    /// Half-length a_i of sample i (mm) of the last solve.
+    pub fn half_length(&self, i: usize) -> T {
+        let h = self.depth(i);
+        if h > T::ZERO {
+            math::sqrt(h / self.at[i])
+        } else {
+            T::ZERO
+        }
+    }
+    /// Peak pressure p_max,i of sample i (MPa) of the last solve.
+    pub fn peak_pressure(&self, i: usize) -> T {
+        let h = self.depth(i);
+        if h > T::ZERO {
+            c::<T>(2.0 / core::f64::consts::PI) * self.kst[i] * math::sqrt(h * self.at[i])
+        } else {
+            T::ZERO
+        }
+    }
+    /// Filtered lateral curvature B_f,i (1/mm) of the last solve.
+    pub fn filtered_curvature(&self, i: usize) -> T {
+        if i < self.n {
+            self.bf[i]
+        } else {
+            T::ZERO
+        }
+    }
+    /// Debug view of the basins of the last solve: (index of minimum, z_min, θ, z_ref, l₀).
+    pub fn basin_info(&self, k: usize) -> Option<(usize, T, T, T, T)> {
+        if k < self.nb {
+            let b = self.basins[k];
+            Some((b.imin, b.zmin, b.theta, b.zref, self.l0[k]))
+        } else {
+            None
+        }
+    }
+    /// Local ε_i of the last solve.
+    pub fn eps_local(&self, i: usize) -> T {
+        if i < self.n {
+            self.eps[i]
+        } else {
+            T::ZERO
+        }
+    }
+
+    /// Solves the normal problem for total load `load` (N) on `samples` (see module docs).
+    ///
+    /// Errors: too few/many samples, non-finite or non-ascending input, A ≤ 0, load ≤ 0, no contact,
+    /// and errors of the Hertz coefficients.
+    pub fn solve(
+        &mut self,
+        samples: &[StripSample<T>],
+        load: T,
+        mat: &Material<T>,
+        cfg: &StripesConfig<T>,
+    ) -> Result<StripesSolution<T, NR>, Error> {
+        let n = samples.len();
+        if n < 2 {
+            return Err(Error::GridTooSmall("samples"));
+        }
+        if n > NS {
+            return Err(Error::OutOfRange("samples exceed capacity"));
+        }
+        check_positive(load, "N")?;
+        check_positive(mat.e_star, "E*")?;
+        check_finite(cfg.blend, "blend")?;
+        if cfg.blend < T::ZERO {
+            return Err(Error::OutOfRange("blend"));
+        }
+        check_positive(cfg.b_min, "b_min")?;
+        match cfg.h_mode {
+            HMode::EpsSmoothed(l) => {
+                check_positive(l, "l_eps")?;
+            }
+            HMode::Eps0 | HMode::EpsLocal => {}
+        }
+        if let L0Mode::PatchFraction(f) = cfg.l0_mode {
+            check_positive(f, "l0 fraction")?;
+        }
+        let mut zmin = T::MAX;
+        for (i, s) in samples.iter().enumerate() {
+            check_finite(s.y, "y")?;
+            check_positive(s.dy, "dy")?;
+            check_finite(s.z, "z")?;
+            check_positive(s.curv_a, "A")?;
+            check_finite(s.curv_b, "B")?;
+            check_finite(s.xc, "xc")?;
+            if i > 0 && s.y <= samples[i - 1].y {
+                return Err(Error::OutOfRange("y not ascending"));
+            }
+            if s.z < zmin {
+                zmin = s.z;
+            }
+        }
+        self.n = n;
+        self.e_star = mat.e_star;
+        for (i, s) in samples.iter().enumerate() {
+            self.y[i] = s.y;
+            self.z[i] = s.z - zmin;
+        }
+        let mut iterations = 0;
+        let mut converged = true;
+        // Filter lengths: one global length, or one per basin of an unfiltered pass.
+        self.l0_global = T::ZERO;
+        self.nb = 0;
+        match cfg.l0_mode {
+            L0Mode::Off => {}
+            L0Mode::HertzB => {
+                let mut ideep = 0;
+                for i in 0..n {
+                    if self.z[i] < self.z[ideep] {
+                        ideep = i;
+                    }
+                }
+                let s = samples[ideep];
+                let bb = math::max(s.curv_b, cfg.b_min);
+                let hz = hertz::from_load(s.curv_a, bb, load, mat)?;
+                self.l0_global = hz.b;
+            }
+            L0Mode::PatchFraction(f) => {
+                // Unfiltered pass → w per basin.
+                self.coefficients(samples, cfg, false)?;
+                let (it, conv, _) = self.passes(samples, load, cfg)?;
+                iterations += it;
+                converged &= conv;
+                self.basin_extents(samples);
+                let nb = self.nb;
+                // w_eff,k = max_j (1 − θ_kj) w_kj.
+                for k in 0..nb {
+                    let mut w_eff = T::ZERO;
+                    for j in 0..nb {
+                        let (lo, hi) = if j < k { (j, k) } else { (k, j) };
+                        let mut theta = T::ZERO;
+                        let mut ylo = T::MAX;
+                        let mut yhi = -T::MAX;
+                        for q in lo..=hi {
+                            let b = self.basins[q];
+                            if q < hi {
+                                theta = math::max(theta, b.theta);
+                            }
+                            if b.in_contact {
+                                ylo = math::min(ylo, b.ylo);
+                                yhi = math::max(yhi, b.yhi);
+                            }
+                        }
+                        if yhi > ylo {
+                            w_eff = math::max(w_eff, (T::ONE - theta) * T::HALF * (yhi - ylo));
+                        }
+                    }
+                    self.l0[k] = f * w_eff;
+                }
+            }
+        }
+        // Filtered pass.
+        let per_basin = matches!(cfg.l0_mode, L0Mode::PatchFraction(_));
+        self.coefficients(samples, cfg, per_basin)?;
+        let (it, conv, passes) = self.passes(samples, load, cfg)?;
+        iterations += it;
+        converged &= conv;
+        // Outputs on the fine samples.
+        let mut sol = StripesSolution {
+            delta: self.delta_last,
+            z_offset: zmin,
+            iterations,
+            converged,
+            passes,
+            basins: self.nb,
+            load: T::ZERO,
+            pmax: T::ZERO,
+            area: T::ZERO,
+            regions: [RegionSummary::default(); NR],
+            n_regions: 0,
+        };
+        let mut i = 0;
+        let mut guard = 0;
+        while i < n && guard <= n {
+            guard += 1;
+            if self.hu[i] <= T::ZERO {
+                i += 1;
+                continue;
+            }
+            let first = i;
+            let mut reg = RegionSummary {
+                first,
+                ..RegionSummary::default()
+            };
+            while i < n && self.hu[i] > T::ZERO {
+                let a = self.half_length(i);
+                let p = self.peak_pressure(i);
+                let dy = samples[i].dy;
+                reg.load += self.kst[i] * self.hu[i] * dy;
+                reg.area += T::TWO * a * dy;
+                reg.pmax = math::max(reg.pmax, p);
+                reg.a_max = math::max(reg.a_max, a);
+                i += 1;
+            }
+            reg.count = i - first;
+            reg.y_lo = self.edge_left(first, samples);
+            reg.y_hi = self.edge_right(i - 1, samples);
+            if sol.n_regions >= NR {
+                return Err(Error::TooManyRegions);
+            }
+            sol.load += reg.load;
+            sol.area += reg.area;
+            sol.pmax = math::max(sol.pmax, reg.pmax);
+            sol.regions[sol.n_regions] = reg;
+            sol.n_regions += 1;
+        }
+        if sol.n_regions == 0 {
+            return Err(Error::NoContact);
+        }
+        Ok(sol)
+    }
+
+    fn edge_left(&self, i: usize, samples: &[StripSample<T>]) -> T {
+        if i == 0 {
+            return self.y[0] - T::HALF * samples[0].dy;
+        }
+        let (h0, h1) = (self.hu[i - 1], self.hu[i]);
+        let t = h1 / (h1 - h0);
+        self.y[i] - t * (self.y[i] - self.y[i - 1])
+    }
+
+    fn edge_right(&self, i: usize, samples: &[StripSample<T>]) -> T {
+        let n = self.n;
+        if i + 1 >= n {
+            return self.y[n - 1] + T::HALF * samples[n - 1].dy;
+        }
+        let (h0, h1) = (self.hu[i], self.hu[i + 1]);
+        let t = h0 / (h0 - h1);
+        self.y[i] + t * (self.y[i + 1] - self.y[i])
+    }
+
+    /// Filters B (one global l₀, or per basin zone of the previous pass when `per_basin`), then the
+    /// per-sample Hertz quantities and e_i.
+    fn coefficients(
+        &mut self,
+        samples: &[StripSample<T>],
+        cfg: &StripesConfig<T>,
+        per_basin: bool,
+    ) -> Result<(), Error> {
+        let n = self.n;
+        for (t, s) in self.tmp.iter_mut().zip(samples.iter()) {
+            *t = s.curv_b;
+        }
+        if per_basin {
+            let mut last = -T::ONE;
+            for k in 0..self.nb {
+                let l = self.l0[k];
+                if l != last {
+                    boussinesq_filter(&self.y[..n], &self.tmp[..n], l, &mut self.eps[..n]);
+                    last = l;
+                }
+                for i in 0..n {
+                    if usize::from(self.zone[i]) == k {
+                        self.bf[i] = self.eps[i];
+                    }
+                }
+            }
+        } else {
+            boussinesq_filter(
+                &self.y[..n],
+                &self.tmp[..n],
+                self.l0_global,
+                &mut self.bf[..n],
+            );
+        }
+        for (i, s) in samples.iter().enumerate().take(n) {
+            let a = s.curv_a;
+            let b = math::max(self.bf[i], cfg.b_min);
+            self.bf[i] = b;
+            let h = hertz::coefficients(a, b)?;
+            let ratio = h.n / h.m;
+            self.nm[i] = ratio;
+            self.at[i] = ratio * ratio * b;
+            let eps = h.n * h.n * b / (h.r * (a + b));
+            self.eps[i] = eps;
+            self.kst[i] = self.e_star / (h.n * h.r * eps);
+        }
+        match cfg.h_mode {
+            HMode::EpsSmoothed(l) => {
+                boussinesq_filter(&self.y[..n], &self.eps[..n], l, &mut self.e[..n]);
+            }
+            HMode::EpsLocal | HMode::Eps0 => {
+                self.e[..n].copy_from_slice(&self.eps[..n]);
+            }
+        }
+        Ok(())
+    }
+
+    /// Load control with the current z_ref, e; stores the unclipped depths in `hu`.
+    fn load_control(
+        &mut self,
+        samples: &[StripSample<T>],
+        load: T,
+    ) -> Result<LoadControl<T>, Error> {
+        let n = self.n;
+        let (kst, e, z, zref) = (&self.kst, &self.e, &self.z, &self.zref);
+        let lc = solve_piecewise_linear(n, load, |i| {
+            let ei = e[i];
+            (kst[i] * samples[i].dy * ei, zref[i] + (z[i] - zref[i]) / ei)
+        })?;
+        for i in 0..n {
+            self.hu[i] = self.e[i] * (lc.delta - self.zref[i]) - (self.z[i] - self.zref[i]);
+        }
+        self.delta_last = lc.delta;
+        Ok(lc)
+    }
+
+    /// The iterated partition of §6 item 8 (module docs). Returns (iterations, converged, passes).
+    fn passes(
+        &mut self,
+        samples: &[StripSample<T>],
+        load: T,
+        cfg: &StripesConfig<T>,
+    ) -> Result<(u32, bool, u32), Error> {
+        let n = self.n;
+        // Pass 1: one region, z_ref = 0 (global minimum), ε₀ of the deepest sample.
+        let mut ideep = 0;
+        for i in 0..n {
+            if self.z[i] < self.z[ideep] {
+                ideep = i;
+            }
+        }
+        let eps_deep = self.eps[ideep];
+        self.zref[..n].fill(T::ZERO);
+        self.zone[..n].fill(0);
+        if matches!(cfg.h_mode, HMode::Eps0) {
+            self.e[..n].fill(eps_deep);
+        }
+        let lc = self.load_control(samples, load)?;
+        let mut iterations = lc.iterations;
+        let mut converged = lc.converged;
+        let mut passes = 1;
+        for pass in 2..=MAX_PASSES {
+            let delta = self.delta_last;
+            self.find_basins(delta, cfg, eps_deep);
+            if self.nb <= 1 && pass == 2 {
+                break;
+            }
+            self.assign_ref(delta, cfg);
+            let lc = self.load_control(samples, load)?;
+            iterations += lc.iterations;
+            converged &= lc.converged;
+            passes = pass;
+        }
+        Ok((iterations, converged, passes))
+    }
+
+    /// Basins (local minima of z below δ), their saddles, zones and link weights θ.
+    fn find_basins(&mut self, delta: T, cfg: &StripesConfig<T>, eps_deep: T) {
+        let n = self.n;
+        let mut nb = 0usize;
+        let mut run_max = -T::MAX;
+        let mut run_idx = 0usize;
+        for i in 0..n {
+            let left_ok = i == 0 || self.z[i] < self.z[i - 1];
+            let right_ok = i + 1 == n || self.z[i] <= self.z[i + 1];
+            if left_ok && right_ok && self.z[i] < delta {
+                if nb > 0 {
+                    let prev = &mut self.basins[nb - 1];
+                    prev.saddle = run_max;
+                    prev.isaddle = run_idx;
+                }
+                if nb == NB {
+                    // Capacity: merge the weakest link among the NB − 1 links and this new one.
+                    self.merge_weakest(nb);
+                    nb -= 1;
+                }
+                self.basins[nb] = Basin {
+                    imin: i,
+                    zmin: self.z[i],
+                    saddle: T::MAX,
+                    isaddle: n - 1,
+                    ..Basin::default()
+                };
+                nb += 1;
+                run_max = -T::MAX;
+                run_idx = i;
+            } else if self.z[i] > run_max || nb == 0 {
+                run_max = self.z[i];
+                run_idx = i;
+            }
+        }
+        if nb == 0 {
+            // Cannot happen (the global minimum lies below δ > 0); keep one basin for safety.
+            self.basins[0] = Basin {
+                imin: 0,
+                zmin: T::ZERO,
+                saddle: T::MAX,
+                isaddle: n - 1,
+                ..Basin::default()
+            };
+            nb = 1;
+        }
+        self.nb = nb;
+        // Zones and θ of each link.
+        let mut start = 0usize;
+        for k in 0..nb {
+            let b = self.basins[k];
+            let end = if k + 1 < nb { b.isaddle } else { n - 1 };
+            for i in start..=end.min(n - 1) {
+                self.zone[i] = k as u8;
+            }
+            start = end + 1;
+            if k + 1 < nb {
+                let nxt = self.basins[k + 1];
+                // How far the link's least-covered sample lies outside the one-region contact set:
+                // max over the samples between the minima of z_i − e_i δ (continuous in the data,
+                // unlike the value at the arg-max of z).
+                let mut out_of_contact = -T::MAX;
+                for i in b.imin..=nxt.imin.min(n - 1) {
+                    let e_i = match cfg.h_mode {
+                        HMode::Eps0 => eps_deep,
+                        _ => self.e[i],
+                    };
+                    out_of_contact = math::max(out_of_contact, self.z[i] - e_i * delta);
+                }
+                let prominence = b.saddle - math::max(b.zmin, nxt.zmin);
+                let m = math::min(out_of_contact, prominence);
+                let scale = cfg.blend * delta;
+                self.basins[k].theta = if m <= T::ZERO {
+                    T::ZERO
+                } else if scale <= T::ZERO {
+                    T::ONE
+                } else {
+                    smoothstep(m / scale)
+                };
+            } else {
+                self.basins[k].theta = T::ONE;
+            }
+        }
+    }
+
+    /// Merges the weakest link among basins 0..=nb (basin nb is the pending new one, described by
+    /// the saddle stored in basin nb−1). Keeps the lower minimum.
+    fn merge_weakest(&mut self, nb: usize) {
+        // links 0..nb−1 are between basin k and k+1 (k+1 == nb means the pending basin, whose min is
+        // not stored; treat its prominence as the saddle minus the left min only).
+        let mut weakest = 0;
+        let mut wp = T::MAX;
+        for k in 0..nb.saturating_sub(1) {
+            let p = self.basins[k].saddle - math::max(self.basins[k].zmin, self.basins[k + 1].zmin);
+            if p < wp {
+                wp = p;
+                weakest = k;
+            }
+        }
+        // Merge basins `weakest` and `weakest+1`.
+        let (l, r) = (self.basins[weakest], self.basins[weakest + 1]);
+        let mut m = if l.zmin <= r.zmin { l } else { r };
+        // Right link of the merged basin: r's link (to the next), widened if the minimum is l's.
+        if l.zmin <= r.zmin {
+            if self.basins[weakest].saddle >= r.saddle {
+                m.saddle = l.saddle;
+                m.isaddle = l.isaddle;
+            } else {
+                m.saddle = r.saddle;
+                m.isaddle = r.isaddle;
+            }
+        } else {
+            m.saddle = r.saddle;
+            m.isaddle = r.isaddle;
+            // Left link (stored in basin weakest−1) widens to include l's saddle.
+            if weakest > 0 && l.saddle > self.basins[weakest - 1].saddle {
+                self.basins[weakest - 1].saddle = l.saddle;
+                self.basins[weakest - 1].isaddle = l.isaddle;
+            }
+        }
+        self.basins[weakest] = m;
+        for k in weakest + 1..nb - 1 {
+            self.basins[k] = self.basins[k + 1];
+        }
+    }
+
+    /// z_ref,k = min_j (z_min,j + θ_kj δ); ε₀ (for `Eps0`) of the minimiser; per-sample copies.
+    fn assign_ref(&mut self, delta: T, cfg: &StripesConfig<T>) {
+        let nb = self.nb;
+        for k in 0..nb {
+            let mut best = self.basins[k].zmin;
+            let mut jbest = k;
+            // to the right
+            let mut theta = T::ZERO;
+            for j in k + 1..nb {
+                theta = math::max(theta, self.basins[j - 1].theta);
+                let v = self.basins[j].zmin + theta * delta;
+                if v < best {
+                    best = v;
+                    jbest = j;
+                }
+            }
+            let mut theta = T::ZERO;
+            for j in (0..k).rev() {
+                theta = math::max(theta, self.basins[j].theta);
+                let v = self.basins[j].zmin + theta * delta;
+                if v < best {
+                    best = v;
+                    jbest = j;
+                }
+            }
+            self.basins[k].zref = best;
+            self.basins[k].eps0 = self.eps[self.basins[jbest].imin];
+        }
+        let eps0_mode = matches!(cfg.h_mode, HMode::Eps0);
+        for i in 0..self.n {
+            let b = self.basins[usize::from(self.zone[i]).min(nb - 1)];
+            self.zref[i] = b.zref;
+            if eps0_mode {
+                self.e[i] = b.eps0;
+            }
+        }
+    }
+
+    /// Lateral extent of each basin zone's contact set (interpolated edges).
+    fn basin_extents(&mut self, samples: &[StripSample<T>]) {
+        for k in 0..self.nb {
+            self.basins[k].in_contact = false;
+            self.basins[k].ylo = T::MAX;
+            self.basins[k].yhi = -T::MAX;
+        }
+        let n = self.n;
+        for i in 0..n {
+            if self.hu[i] > T::ZERO {
+                let k = usize::from(self.zone[i]).min(self.nb - 1);
+                let lo = if i == 0 || self.hu[i - 1] <= T::ZERO {
+                    self.edge_left(i, samples)
+                } else {
+                    self.y[i]
+                };
+                let hi = if i + 1 == n || self.hu[i + 1] <= T::ZERO {
+                    self.edge_right(i, samples)
+                } else {
+                    self.y[i]
+                };
+                let b = &mut self.basins[k];
+                b.in_contact = true;
+                b.ylo = math::min(b.ylo, lo);
+                b.yhi = math::max(b.yhi, hi);
+            }
+        }
+    }
+
+    /// Lays out evenly spaced strips over each region of `sol` (`per_region` each, at least
+    /// [`MIN_STRIPS_PER_REGION`]; fewer per region if the capacity `S` is short, error if it cannot
+    /// hold the minimum), interpolates the sample quantities linearly and solves the load control
+    /// again on the strips (same partition and reference levels).
+    pub fn layout<const S: usize>(
+        &self,
+        sol: &StripesSolution<T, NR>,
+        samples: &[StripSample<T>],
+        load: T,
+        per_region: usize,
+        out: &mut StripSet<T, S, NR>,
+    ) -> Result<(), Error> {
+        let nr = sol.n_regions;
+        if nr == 0 || self.n < 2 || samples.len() != self.n {
+            return Err(Error::NoContact);
+        }
+        if per_region < MIN_STRIPS_PER_REGION {
+            return Err(Error::GridTooSmall("strips per region"));
+        }
+        let per = per_region.min(S / nr);
+        if per < MIN_STRIPS_PER_REGION {
+            return Err(Error::GridTooSmall("strip capacity"));
+        }
+        let n = self.n;
+        let mut j = 0usize;
+        for r in 0..nr {
+            let reg = sol.regions[r];
+            let width = reg.y_hi - reg.y_lo;
+            let dy = width / T::from_usize(per);
+            out.regions[r] = RegionSummary {
+                y_lo: reg.y_lo,
+                y_hi: reg.y_hi,
+                first: j,
+                count: per,
+                ..RegionSummary::default()
+            };
+            let mut i = 0usize; // bracket search start (samples ascending)
+            for q in 0..per {
+                let y = reg.y_lo + (T::from_usize(q) + T::HALF) * dy;
+                while i + 2 < n && self.y[i + 1] < y {
+                    i += 1;
+                }
+                let (i0, i1) = (i, i + 1);
+                let t = math::clamp(
+                    (y - self.y[i0]) / (self.y[i1] - self.y[i0]),
+                    T::ZERO,
+                    T::ONE,
+                );
+                let lerp = |v: &[T; NS]| v[i0] + t * (v[i1] - v[i0]);
+                out.y[j] = y;
+                out.dy[j] = dy;
+                out.xc[j] = samples[i0].xc + t * (samples[i1].xc - samples[i0].xc);
+                out.curv_a[j] = samples[i0].curv_a + t * (samples[i1].curv_a - samples[i0].curv_a);
+                out.curv_bf[j] = lerp(&self.bf);
+                out.n_over_m[j] = lerp(&self.nm);
+                out.region[j] = r as u8;
+                // temporaries for the re-solve: store in h (z), pmax (zref), a (e) until solved
+                out.h[j] = lerp(&self.z);
+                out.pmax[j] = lerp(&self.zref);
+                out.a[j] = lerp(&self.e);
+                j += 1;
+            }
+        }
+        out.n_strips = j;
+        out.n_regions = nr;
+        // Per-strip stiffness and Ã by interpolation; re-solve.
+        let mut i = 0usize;
+        for q in 0..j {
+            let y = out.y[q];
+            if q > 0 && out.y[q] < out.y[q - 1] {
+                i = 0;
+            }
+            while i + 2 < n && self.y[i + 1] < y {
+                i += 1;
+            }
+            let t = math::clamp(
+                (y - self.y[i]) / (self.y[i + 1] - self.y[i]),
+                T::ZERO,
+                T::ONE,
+            );
+            out.stiffness[q] = self.kst[i] + t * (self.kst[i + 1] - self.kst[i]);
+            out.a_tilde[q] = self.at[i] + t * (self.at[i + 1] - self.at[i]);
+        }
+        let lc = {
+            let (z, zref, e, dyv) = (&out.h, &out.pmax, &out.a, &out.dy);
+            let kst = &out.stiffness;
+            solve_piecewise_linear(j, load, |q| {
+                (kst[q] * dyv[q] * e[q], zref[q] + (z[q] - zref[q]) / e[q])
+            })?
+        };
+        out.delta = lc.delta;
+        out.iterations = lc.iterations;
+        out.converged = lc.converged;
+        out.total_load = T::ZERO;
+        out.total_area = T::ZERO;
+        out.total_pmax = T::ZERO;
+        let two_over_pi = c::<T>(2.0 / core::f64::consts::PI);
+        for q in 0..j {
+            let (kst, at) = (out.stiffness[q], out.a_tilde[q]);
+            let (z, zref, e) = (out.h[q], out.pmax[q], out.a[q]);
+            let h = math::max(e * (lc.delta - zref) - (z - zref), T::ZERO);
+            out.h[q] = h;
+            if h > T::ZERO {
+                out.a[q] = math::sqrt(h / at);
+                out.pmax[q] = two_over_pi * kst * math::sqrt(h * at);
+            } else {
+                out.a[q] = T::ZERO;
+                out.pmax[q] = T::ZERO;
+            }
+            let r = usize::from(out.region[q]);
+            let f = kst * h * out.dy[q];
+            let area = T::TWO * out.a[q] * out.dy[q];
+            let reg = &mut out.regions[r];
+            reg.load += f;
+            reg.area += area;
+            reg.pmax = math::max(reg.pmax, out.pmax[q]);
+            reg.a_max = math::max(reg.a_max, out.a[q]);
+            out.total_load += f;
+            out.total_area += area;
+            out.total_pmax = math::max(out.total_pmax, out.pmax[q]);
+        }
+        Ok(())
+    }
+}
