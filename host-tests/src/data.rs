@@ -2,19 +2,21 @@
 
 use std::path::PathBuf;
 
-/// The `shared/data` directory: `$WRC_SHARED_DATA` if set, else `<repo>/../shared/data`.
+/// The `shared/data` directory: `$WRC_SHARED_DATA` if set, else the first `shared/data` found
+/// beside the repository or beside one of its ancestors (`<repo>/../shared/data` in CI and in the
+/// main checkout; also found from git worktrees nested deeper).
 pub fn shared_data_dir() -> PathBuf {
     if let Ok(p) = std::env::var("WRC_SHARED_DATA") {
         return PathBuf::from(p);
     }
-    let repo = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .expect("host-tests lives inside the repository")
-        .to_path_buf();
-    repo.parent()
-        .expect("repository has a parent directory")
-        .join("shared")
-        .join("data")
+    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    for dir in manifest.ancestors().skip(1) {
+        let cand = dir.join("shared").join("data");
+        if cand.is_dir() {
+            return cand;
+        }
+    }
+    manifest.join("..").join("..").join("shared").join("data")
 }
 
 /// Path of a file below `shared/data`.

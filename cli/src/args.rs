@@ -1,0 +1,233 @@
+//! Command-line arguments (contract: shared/docs/cli.md).
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use serde::Serialize;
+use std::path::PathBuf;
+
+/// wrc — wheel–rail rolling contact in bounded time.
+#[derive(Parser, Debug)]
+#[command(name = "wrc", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Solve one contact case (elliptic or wheel/rail).
+    Solve(SolveArgs),
+    /// The lateral-shift sweep of An et al. (2019): every shift with all six simplified models.
+    Sweep(SweepArgs),
+}
+
+/// Normal-contact model.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Normal {
+    /// STRIPES semi-Hertzian (kernel default for wheel/rail cases).
+    Stripes,
+    /// One Hertz ellipse (kernel default for elliptic cases).
+    Hertz,
+    /// Kalker's boundary-element NORM (host reference).
+    Norm,
+}
+
+/// Flexibility adaptation.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Flex {
+    /// Kalker's flexibilities of one Hertz ellipse.
+    Hertz,
+    /// Kik–Piotrowski equivalent ellipse.
+    Kp,
+    /// Linder's virtual ellipses.
+    Linder,
+    /// Ayasse–Chollet local ellipses (default for wheel/rail cases).
+    Ac,
+}
+
+/// Tangential model.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Tangential {
+    /// Kalker's simplified theory.
+    Fastsim,
+    /// FaStrip (default).
+    Fastrip,
+    /// Kalker's exact steady-rolling theory (host reference).
+    Exact,
+}
+
+/// Floating-point width of the kernel call.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Precision {
+    /// 64-bit.
+    F64,
+    /// 32-bit.
+    F32,
+}
+
+/// Wheel side.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Side {
+    /// Left wheel.
+    Left,
+    /// Right wheel.
+    Right,
+}
+
+/// Parses "A,B" into two numbers.
+fn pair(s: &str) -> Result<[f64; 2], String> {
+    let mut it = s.split(',').map(|t| t.trim().parse::<f64>());
+    match (it.next(), it.next(), it.next()) {
+        (Some(Ok(a)), Some(Ok(b)), None) => Ok([a, b]),
+        _ => Err(format!("expected two numbers A,B, got {s:?}")),
+    }
+}
+
+/// Options common to every case.
+#[derive(Args, Debug, Clone, Serialize)]
+pub struct Common {
+    /// Longitudinal creepage ξ (computed from the kinematics for wheel/rail cases unless given).
+    #[arg(long, allow_hyphen_values = true)]
+    pub xi: Option<f64>,
+    /// Lateral creepage η.
+    #[arg(long, allow_hyphen_values = true)]
+    pub eta: Option<f64>,
+    /// Spin creepage φ, 1/mm.
+    #[arg(long, allow_hyphen_values = true)]
+    pub phi: Option<f64>,
+    /// Coefficient of friction.
+    #[arg(long, default_value_t = 0.3)]
+    pub mu: f64,
+    /// Young's modulus of both bodies, MPa.
+    #[arg(long = "e-mpa", default_value_t = 205_900.0)]
+    pub e_mpa: f64,
+    /// Poisson ratio of both bodies.
+    #[arg(long, default_value_t = 0.28)]
+    pub nu: f64,
+    /// Rolling speed, m/s (default 200 km/h).
+    #[arg(long, default_value_t = 200.0 / 3.6)]
+    pub speed: f64,
+    /// Normal model (default: hertz for elliptic cases, stripes for wheel/rail cases).
+    #[arg(long, value_enum)]
+    pub normal: Option<Normal>,
+    /// Flexibility adaptation (default: hertz for elliptic cases, ac for wheel/rail cases).
+    #[arg(long, value_enum)]
+    pub flex: Option<Flex>,
+    /// Tangential model.
+    #[arg(long, value_enum, default_value = "fastrip")]
+    pub tangential: Tangential,
+    /// Strips per contact region.
+    #[arg(long, default_value_t = 32)]
+    pub strips: usize,
+    /// Cells per strip.
+    #[arg(long, default_value_t = 32)]
+    pub cells: usize,
+    /// Precision of the kernel call.
+    #[arg(long, value_enum, default_value = "f64")]
+    pub precision: Precision,
+}
+
+/// Wheel/rail case options.
+#[derive(Args, Debug, Clone, Serialize)]
+pub struct WheelRail {
+    /// Wheel profile (.prw or two-column file).
+    #[arg(long)]
+    pub wheel: Option<PathBuf>,
+    /// Rail profile (.prr or two-column file).
+    #[arg(long)]
+    pub rail: Option<PathBuf>,
+    /// Lateral wheelset shift, mm.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub dy: f64,
+    /// Yaw angle, mrad.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub yaw: f64,
+    /// Roll angle, mrad.
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub roll: f64,
+    /// Vertical load on this wheel, N.
+    #[arg(long, default_value_t = 83_300.0)]
+    pub fz: f64,
+    /// Which wheel.
+    #[arg(long, value_enum, default_value = "right")]
+    pub side: Side,
+    /// Track gauge, mm.
+    #[arg(long, default_value_t = 1435.0)]
+    pub gauge: f64,
+    /// Depth below the rail top at which the gauge is measured, mm.
+    #[arg(long = "gauge-depth", default_value_t = 14.0)]
+    pub gauge_depth: f64,
+    /// Back-to-back distance of the wheels, mm (default 1360 for `solve`, 1353 for `sweep`).
+    #[arg(long = "back-to-back")]
+    pub back_to_back: Option<f64>,
+    /// Extra rail inclination, rad (the profile's own inclination is used as given).
+    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    pub cant: f64,
+    /// Nominal rolling radius, mm.
+    #[arg(long, default_value_t = 460.0)]
+    pub r0: f64,
+}
+
+/// `wrc solve`.
+#[derive(Args, Debug, Clone)]
+pub struct SolveArgs {
+    /// Elliptic case: semi-axes A_MM,B_MM along x and y.
+    #[arg(long, value_parser = pair, conflicts_with_all = ["curvatures", "wheel"])]
+    pub ellipse: Option<[f64; 2]>,
+    /// Elliptic case: gap curvatures A_PER_MM,B_PER_MM along x and y.
+    #[arg(long, value_parser = pair, conflicts_with = "wheel")]
+    pub curvatures: Option<[f64; 2]>,
+    /// Normal force, N (elliptic case).
+    #[arg(long = "fn")]
+    pub fn_n: Option<f64>,
+    /// Approach, mm (elliptic case, instead of --fn).
+    #[arg(long, conflicts_with = "fn_n")]
+    pub approach: Option<f64>,
+    /// Wheel/rail case data.
+    #[command(flatten)]
+    pub wr: WheelRail,
+    /// Model and material options.
+    #[command(flatten)]
+    pub common: Common,
+    /// Print one JSON document instead of the table.
+    #[arg(long)]
+    pub json: bool,
+    /// Write SVG plots (pressure, traction with stick/slip, slip velocity, wear) into this directory.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+}
+
+/// `wrc sweep`.
+#[derive(Args, Debug, Clone)]
+pub struct SweepArgs {
+    /// Wheel/rail data (defaults: the shared S1002/UIC60 profiles, 83.3 kN, back-to-back 1353 mm).
+    #[command(flatten)]
+    pub wr: WheelRail,
+    /// First lateral shift, mm.
+    #[arg(long = "dy-from", default_value_t = -3.0, allow_hyphen_values = true)]
+    pub dy_from: f64,
+    /// Last lateral shift, mm.
+    #[arg(long = "dy-to", default_value_t = 6.0, allow_hyphen_values = true)]
+    pub dy_to: f64,
+    /// Shift step, mm.
+    #[arg(long = "dy-step", default_value_t = 1.0)]
+    pub dy_step: f64,
+    /// Material and grid options.
+    #[command(flatten)]
+    pub common: Common,
+    /// Print one JSON document (an array of solve documents per model).
+    #[arg(long)]
+    pub json: bool,
+    /// Write the table as CSV.
+    #[arg(long)]
+    pub csv: Option<PathBuf>,
+    /// Write SVG plots into this directory.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
+}
