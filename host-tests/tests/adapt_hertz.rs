@@ -90,7 +90,8 @@ fn adaptations_on_a_hertz_patch() {
         .unwrap();
         for s in p.strips.iter().filter(|s| s.a > 0.0) {
             assert!(rel(s.flex.l1, kal.l1 * s.a / hz.a) < 2e-3);
-            assert!(rel(s.c11, k.c11) < 1e-9 && rel(s.sqrt_b_over_a, (hz.b / hz.a).sqrt()) < 1e-6);
+            // n/m comes from the Hertz table (relative error ≤ 3.4e-7).
+            assert!(rel(s.c11, k.c11) < 2e-6 && rel(s.sqrt_b_over_a, (hz.b / hz.a).sqrt()) < 2e-6);
         }
     }
 }

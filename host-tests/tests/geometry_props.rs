@@ -544,3 +544,68 @@ fn f32_geometry() {
         );
     }
 }
+
+/// Rail placement (§7.1) for extra cant 0 and 1:40 (on the pre-canted file: 1:20 in total) and
+/// gauge depths 14 and 16 mm: the highest rail point lies at z = 0 and the gauge-side point at
+/// the gauge depth lies at y_S = gauge/2; the wheel still finds its contact (the side faces that
+/// overhang after the extra cant are cut off by the monotone window).
+#[test]
+fn rail_placement_top_and_gauge() {
+    let (w, r) = tables();
+    for cant in [0.0, (1.0f64 / 40.0).atan()] {
+        for depth in [14.0, 16.0] {
+            let setup = TrackSetup {
+                cant,
+                gauge_depth: depth,
+                ..TrackSetup::standard()
+            };
+            let g = WheelRail::<f64, 2048, 2048>::place(
+                &r,
+                &w,
+                &setup,
+                &WheelsetPose {
+                    dy: 0.0,
+                    yaw: 0.0,
+                    roll: 0.0,
+                },
+                Side::Right,
+                0.05,
+            )
+            .unwrap();
+            let rail = g.rail;
+            let mut zmax = f64::MIN;
+            let mut k_top = 0;
+            for k in 0..r.len {
+                let z = rail.at(k as f64).z;
+                if z > zmax {
+                    zmax = z;
+                    k_top = k;
+                }
+            }
+            assert!(zmax <= 1e-9 && zmax > -1e-4, "cant {cant}: top {zmax}");
+            let mut k = k_top;
+            while rail.at(k as f64).z > -depth {
+                k -= 1;
+            }
+            let (a, b) = (rail.at(k as f64), rail.at(k as f64 + 1.0));
+            let u = (-depth - a.z) / (b.z - a.z);
+            let y = a.y + u * (b.y - a.y);
+            assert!(
+                (y - 717.5).abs() < 2e-3,
+                "cant {cant} depth {depth}: gauge point at {y}"
+            );
+            let mut ps = Box::new(Patches::<f64, 2, 32>::new());
+            contact_patches(
+                &g,
+                0.02,
+                &PatchOptions {
+                    samples: 32,
+                    ..PatchOptions::default()
+                },
+                &mut ps,
+            )
+            .unwrap();
+            assert!(ps.len >= 1);
+        }
+    }
+}

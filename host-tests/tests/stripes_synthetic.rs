@@ -336,3 +336,40 @@ fn f32_hertz_and_bad_inputs() {
     let big = vec![samples[0]; 2000];
     assert!(solver.solve(&big, load, &mat, &cfg).is_err());
 }
+
+#[test]
+fn hertz_table_matches_hertz() {
+    let mut worst: f64 = 0.0;
+    for k in 0..4000 {
+        let u = -18.4 + 18.4 * k as f64 / 3999.0;
+        let rho = u.exp();
+        for (a, b) in [(rho, 1.0), (1.0, rho)] {
+            let h = hertz::coefficients(a, b).unwrap();
+            let (m, n, r) = wrc_kernel::hertz_table::mnr(a, b).unwrap();
+            for (x, y) in [(m, h.m), (n, h.n), (r, h.r)] {
+                worst = worst.max((x / y - 1.0).abs());
+            }
+        }
+    }
+    println!("hertz table: worst relative error {worst:.2e}");
+    assert!(worst < 1e-6, "{worst}");
+    assert!(wrc_kernel::hertz_table::mnr(1e-9, 1.0).is_none());
+    assert!(wrc_kernel::hertz_table::mnr(f64::NAN, 1.0).is_none());
+    let (m, n, r) = wrc_kernel::hertz_table::mnr(0.5f32, 0.5f32).unwrap();
+    assert!((m - 1.0).abs() < 1e-6 && (n - 1.0).abs() < 1e-6 && (r - 1.0).abs() < 1e-6);
+}
+
+#[test]
+#[ignore]
+fn diag_iterations() {
+    let mat = Material::<f64>::steel();
+    let mut solver = Box::new(Solver::new());
+    let samples = double_well(2e-4, 1.2e-5, 8.0, 0.00108);
+    let sol = solver
+        .solve(&samples, 83_300.0, &mat, &StripesConfig::recommended())
+        .unwrap();
+    println!(
+        "iterations {} passes {} basins {}",
+        sol.iterations, sol.passes, sol.basins
+    );
+}

@@ -17,6 +17,7 @@ pub mod fastrip;
 pub mod fastsim;
 pub mod geometry;
 pub mod hertz;
+pub mod hertz_table;
 pub mod kalker;
 pub mod material;
 pub mod math;

@@ -155,20 +155,46 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
     /// tangent angle from the Hermite derivative, linearly interpolated curvature.
     /// The table must be valid ([`Self::validate`]); out-of-range indices are clamped, never panic.
     pub fn point(&self, t: T) -> CurvePoint<T> {
+        self.point_cached(t, &mut SegmentCache::new())
+    }
+
+    /// [`Self::point`] reusing the node tangents of the last segment evaluated with `cache`
+    /// (saves four trigonometric calls per evaluation when marching along the curve).
+    pub fn point_cached(&self, t: T, cache: &mut SegmentCache<T>) -> CurvePoint<T> {
+        let e = self.hermite(t, cache);
+        CurvePoint {
+            y: e.y,
+            z: e.z,
+            angle: math::atan2(e.ts, e.tc),
+            curvature: e.curvature,
+        }
+    }
+
+    /// Position and unit tangent (cos β, sin β) at `t` without the angle (no trigonometry when
+    /// the segment is cached).
+    pub fn hermite(&self, t: T, cache: &mut SegmentCache<T>) -> HermitePoint<T> {
         if self.len < 2 {
-            return CurvePoint {
+            return HermitePoint {
                 y: T::ZERO,
                 z: T::ZERO,
-                angle: T::ZERO,
+                tc: T::ONE,
+                ts: T::ZERO,
                 curvature: T::ZERO,
             };
         }
         let (i, u) = self.segment(t);
         let j = i + 1;
+        if !cache.valid || cache.i != i {
+            cache.i = i;
+            cache.valid = true;
+            cache.c0 = math::cos(self.angle[i]);
+            cache.s0 = math::sin(self.angle[i]);
+            cache.c1 = math::cos(self.angle[j]);
+            cache.s1 = math::sin(self.angle[j]);
+        }
+        let (c0, s0, c1, s1) = (cache.c0, cache.s0, cache.c1, cache.s1);
         let (y0, z0, y1, z1) = (self.y[i], self.z[i], self.y[j], self.z[j]);
         let h = self.ds;
-        let (c0, s0) = (math::cos(self.angle[i]), math::sin(self.angle[i]));
-        let (c1, s1) = (math::cos(self.angle[j]), math::sin(self.angle[j]));
         let u2 = u * u;
         let u3 = u2 * u;
         let two = T::TWO;
@@ -186,12 +212,18 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         let d11 = three * u2 - two * u;
         let dy = d00 * y0 + d10 * h * c0 + d01 * y1 + d11 * h * c1;
         let dz = d00 * z0 + d10 * h * s0 + d01 * z1 + d11 * h * s1;
-        let angle = math::atan2(dz, dy);
+        let norm = math::hypot(dy, dz);
+        let (tc, ts) = if norm > T::ZERO {
+            (dy / norm, dz / norm)
+        } else {
+            (c0, s0)
+        };
         let curvature = self.curvature[i] + u * (self.curvature[j] - self.curvature[i]);
-        CurvePoint {
+        HermitePoint {
             y,
             z,
-            angle,
+            tc,
+            ts,
             curvature,
         }
     }
@@ -206,6 +238,46 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
             curvature: self.curvature[i],
         }
     }
+}
+
+/// Node tangents of the last evaluated segment (see [`ProfileTable::point_cached`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SegmentCache<T> {
+    i: usize,
+    valid: bool,
+    c0: T,
+    s0: T,
+    c1: T,
+    s1: T,
+}
+
+impl<T: Real> SegmentCache<T> {
+    /// An empty cache.
+    pub fn new() -> Self {
+        SegmentCache {
+            i: 0,
+            valid: false,
+            c0: T::ONE,
+            s0: T::ZERO,
+            c1: T::ONE,
+            s1: T::ZERO,
+        }
+    }
+}
+
+/// Position, unit tangent and curvature of a profile curve at a parameter (profile coordinates).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HermitePoint<T> {
+    /// Lateral coordinate, mm.
+    pub y: T,
+    /// Vertical coordinate (down), mm.
+    pub z: T,
+    /// cos β of the unit tangent.
+    pub tc: T,
+    /// sin β of the unit tangent.
+    pub ts: T,
+    /// Curvature dβ/ds, 1/mm.
+    pub curvature: T,
 }
 
 /// Finds u ∈ [0, 1] with `f(u) = 0` given `f(0)` and `f(1)` of opposite signs (or zero), by the

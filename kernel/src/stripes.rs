@@ -193,10 +193,12 @@ pub struct LoadControl<T> {
 }
 
 /// Solves Σ s_i (δ − t_i)₊ = `target` for δ (s_i > 0), exactly up to rounding (see module docs).
-/// `term(i)` returns (s_i, t_i). Relative tolerance 1e-12 (f64) / 4e-6 (f32).
+/// `term(i)` returns (s_i, t_i). Relative tolerance 1e-12 (f64) / 4e-6 (f32). `hint`: an optional
+/// starting approach (e.g. the previous pass's), used to shrink the bracket.
 pub fn solve_piecewise_linear<T: Real>(
     n: usize,
     target: T,
+    hint: Option<T>,
     term: impl Fn(usize) -> (T, T),
 ) -> Result<LoadControl<T>, Error> {
     check_positive(target, "N")?;
@@ -231,8 +233,19 @@ pub fn solve_piecewise_linear<T: Real>(
     } * target;
     let mut lo = t_min;
     let mut hi = t_min + target / s_at_min;
-    let mut d = hi;
     let mut iterations = 0;
+    if let Some(h) = hint {
+        if h > lo && h < hi {
+            iterations += 1;
+            let (f, _) = eval(h);
+            if f >= target {
+                hi = h;
+            } else {
+                lo = h;
+            }
+        }
+    }
+    let mut d = hi;
     let mut converged = false;
     for _ in 0..MAX_NEWTON {
         iterations += 1;
@@ -631,6 +644,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             }
         }
         self.n = n;
+        self.delta_last = T::ZERO;
         self.e_star = mat.e_star;
         for (i, s) in samples.iter().enumerate() {
             self.y[i] = s.y;
@@ -807,13 +821,19 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             let a = s.curv_a;
             let b = math::max(self.bf[i], cfg.b_min);
             self.bf[i] = b;
-            let h = hertz::coefficients(a, b)?;
-            let ratio = h.n / h.m;
+            let (m, nn, r) = match crate::hertz_table::mnr(a, b) {
+                Some(v) => v,
+                None => {
+                    let h = hertz::coefficients(a, b)?;
+                    (h.m, h.n, h.r)
+                }
+            };
+            let ratio = nn / m;
             self.nm[i] = ratio;
             self.at[i] = ratio * ratio * b;
-            let eps = h.n * h.n * b / (h.r * (a + b));
+            let eps = nn * nn * b / (r * (a + b));
             self.eps[i] = eps;
-            self.kst[i] = self.e_star / (h.n * h.r * eps);
+            self.kst[i] = self.e_star / (nn * r * eps);
         }
         match cfg.h_mode {
             HMode::EpsSmoothed(l) => {
@@ -833,11 +853,18 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         load: T,
     ) -> Result<LoadControl<T>, Error> {
         let n = self.n;
-        let (kst, e, z, zref) = (&self.kst, &self.e, &self.z, &self.zref);
-        let lc = solve_piecewise_linear(n, load, |i| {
-            let ei = e[i];
-            (kst[i] * samples[i].dy * ei, zref[i] + (z[i] - zref[i]) / ei)
-        })?;
+        for (i, smp) in samples.iter().enumerate().take(n) {
+            let ei = self.e[i];
+            self.tmp[i] = self.kst[i] * smp.dy * ei;
+            self.hu[i] = self.zref[i] + (self.z[i] - self.zref[i]) / ei;
+        }
+        let hint = if self.delta_last > T::ZERO {
+            Some(self.delta_last)
+        } else {
+            None
+        };
+        let (sv, tv) = (&self.tmp, &self.hu);
+        let lc = solve_piecewise_linear(n, load, hint, |i| (sv[i], tv[i]))?;
         for i in 0..n {
             self.hu[i] = self.e[i] * (lc.delta - self.zref[i]) - (self.z[i] - self.zref[i]);
         }
@@ -1164,7 +1191,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         let lc = {
             let (z, zref, e, dyv) = (&out.h, &out.pmax, &out.a, &out.dy);
             let kst = &out.stiffness;
-            solve_piecewise_linear(j, load, |q| {
+            solve_piecewise_linear(j, load, None, |q| {
                 (kst[q] * dyv[q] * e[q], zref[q] + (z[q] - zref[q]) / e[q])
             })?
         };

@@ -32,7 +32,7 @@
 //! Angles ("tilt") are those of the surface normal pointing into the wheel, positive when it tilts
 //! towards the track centre (flange side), measured in the track frame (they include the roll).
 
-use crate::profile::{illinois, CurvePoint, ProfileKind, ProfileTable};
+use crate::profile::{illinois, CurvePoint, HermitePoint, ProfileKind, ProfileTable, SegmentCache};
 use crate::{math, Error, Real};
 
 /// Track and wheelset constants (mm, rad).
@@ -178,6 +178,8 @@ pub struct PlacedRail<'a, T, const N: usize> {
     ty: T,
     tz: T,
     cant: T,
+    /// Curve parameter of the rail top (highest point in S).
+    pub t_top: T,
 }
 
 impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
@@ -189,12 +191,24 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
             ty: T::ZERO,
             tz: T::ZERO,
             cant,
+            t_top: T::ZERO,
         }
     }
 
     /// The rail point at curve parameter `t`.
     pub fn at(&self, t: T) -> RailPoint<T> {
-        let p = self.table.point(t);
+        self.at_cached(t, &mut SegmentCache::new())
+    }
+
+    /// Lateral position y_S at parameter `t` (root finding; cached).
+    pub fn y_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
+        let e = self.table.hermite(t, cache);
+        e.y * self.cos_a + e.z * self.sin_a + self.ty
+    }
+
+    /// [`Self::at`] with a segment cache.
+    pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> RailPoint<T> {
+        let p = self.table.point_cached(t, cache);
         let (qy, qz) = (p.y, -p.z);
         RailPoint {
             y: qy * self.cos_a - qz * self.sin_a + self.ty,
@@ -206,10 +220,18 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         }
     }
 
-    /// Lateral position of node `i` in S.
+    /// Height z_S of node `i` (exact node value, no interpolation).
+    #[inline]
+    fn node_z(&self, i: usize) -> T {
+        let i = i.min(N - 1);
+        self.table.y[i] * self.sin_a - self.table.z[i] * self.cos_a + self.tz
+    }
+
+    /// Lateral position y_S of node `i`.
+    #[inline]
     fn node_y(&self, i: usize) -> T {
-        let (qy, qz) = (self.table.y[i.min(N - 1)], -self.table.z[i.min(N - 1)]);
-        qy * self.cos_a - qz * self.sin_a + self.ty
+        let i = i.min(N - 1);
+        self.table.y[i] * self.cos_a + self.table.z[i] * self.sin_a + self.ty
     }
 
     /// Places the rail: top at z = 0, gauge face at y_S = gauge/2 (see module docs).
@@ -222,9 +244,9 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         let n = table.len;
         // highest node
         let mut k_top = 0;
-        let mut z_top = r.at(T::ZERO).z;
+        let mut z_top = r.node_z(0);
         for i in 1..n {
-            let z = r.at(T::from_usize(i)).z;
+            let z = r.node_z(i);
             if z > z_top {
                 z_top = z;
                 k_top = i;
@@ -235,6 +257,7 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         let hi = T::from_usize((k_top + 1).min(n - 1));
         let t_top = golden_max(|t| r.at(t).z, lo, hi, 60);
         z_top = r.at(t_top).z;
+        r.t_top = t_top;
         // gauge point: walk from the top towards the track-centre side (decreasing index)
         let target = z_top - setup.gauge_depth;
         let mut k = k_top;
@@ -243,7 +266,7 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
             if k == 0 {
                 break;
             }
-            if r.at(T::from_usize(k - 1)).z <= target {
+            if r.node_z(k - 1) <= target {
                 found = true;
                 k -= 1;
                 break;
@@ -347,10 +370,15 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
 
     /// The lowest wheel point for profile parameter `t`.
     pub fn at(&self, t: T) -> WheelPoint<T> {
-        let p = self.table.point(t);
-        let u = p.y + self.u_off;
-        let r = self.r0 + p.z;
-        let (cb, sb) = (math::cos(p.angle), math::sin(p.angle));
+        self.at_cached(t, &mut SegmentCache::new())
+    }
+
+    /// Angle θ about the axle of the lowest point for unit tangent (cβ, sβ): (sin θ, cos θ).
+    #[inline]
+    fn lowest(&self, cb: T, sb: T) -> (T, T) {
+        if self.spsi == T::ZERO {
+            return (T::ZERO, T::ONE);
+        }
         // cos ψ sin θ − sin φ sin ψ cos θ = −(sβ/cβ) cos φ sin ψ
         let num = -sb * self.cphi * self.spsi;
         let den = cb * self.theta_norm;
@@ -362,7 +390,33 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             -T::ONE
         };
         let theta = self.theta0 + math::asin(ratio);
-        let (st, ct) = (math::sin(theta), math::cos(theta));
+        (math::sin(theta), math::cos(theta))
+    }
+
+    /// Lateral position y_S of the lowest point for parameter `t` (root finding; cached).
+    pub fn y_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
+        let e: HermitePoint<T> = self.table.hermite(t, cache);
+        let u = e.y + self.u_off;
+        let r = self.r0 + e.z;
+        let (st, ct) = self.lowest(e.tc, e.ts);
+        let x1 = r * st;
+        let y1 = u * self.cphi + r * ct * self.sphi;
+        x1 * self.spsi + y1 * self.cpsi + self.cy
+    }
+
+    /// [`Self::at`] with a segment cache.
+    pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> WheelPoint<T> {
+        let e = self.table.hermite(t, cache);
+        let p = CurvePoint {
+            y: e.y,
+            z: e.z,
+            angle: math::atan2(e.ts, e.tc),
+            curvature: e.curvature,
+        };
+        let u = p.y + self.u_off;
+        let r = self.r0 + p.z;
+        let (cb, sb) = (e.tc, e.ts);
+        let (st, ct) = self.lowest(cb, sb);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
         let z1 = u * self.sphi - r * ct * self.cphi;
@@ -412,8 +466,44 @@ fn golden_max<T: Real, F: Fn(T) -> T>(f: F, lo: T, hi: T, iters: usize) -> T {
 /// Finds the curve parameter where a monotone non-decreasing function of the parameter (lateral
 /// position) equals `target`, with a node pointer `k` that only moves forward. Returns the
 /// parameter, or `None` if outside the curve.
-fn solve_forward<T: Real, F: Fn(T) -> T>(
-    f: &F,
+/// The largest node window [lo, hi] around `start` on which `f(node)` is non-decreasing.
+fn monotone_window<T: Real, F: FnMut(usize) -> T>(
+    mut f: F,
+    len: usize,
+    start: usize,
+) -> (usize, usize) {
+    let start = start.min(len.saturating_sub(1));
+    let (mut lo, mut hi) = (start, start);
+    let (mut f_lo, mut f_hi) = (f(start), f(start));
+    for _ in 0..len {
+        if lo == 0 {
+            break;
+        }
+        let v = f(lo - 1);
+        if v <= f_lo {
+            lo -= 1;
+            f_lo = v;
+        } else {
+            break;
+        }
+    }
+    for _ in 0..len {
+        if hi + 1 >= len {
+            break;
+        }
+        let v = f(hi + 1);
+        if v >= f_hi {
+            hi += 1;
+            f_hi = v;
+        } else {
+            break;
+        }
+    }
+    (lo, hi)
+}
+
+fn solve_forward<T: Real, F: FnMut(T) -> T>(
+    f: &mut F,
     len: usize,
     k: &mut usize,
     fk: &mut (T, T),
@@ -531,12 +621,35 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         let wl = self.wheel.table.len;
         let rail = self.rail;
         let wheel = self.wheel;
-        let fy_r = |t: T| rail.at(t).y;
-        let fy_w = |t: T| wheel.at(t).y;
-        let r_lo = rail.node_y(0);
-        let r_hi = rail.node_y(rl - 1);
-        let w_lo = fy_w(T::ZERO);
-        let w_hi = fy_w(T::from_usize(wl - 1));
+        let mut cr = SegmentCache::new();
+        let mut cw = SegmentCache::new();
+        let mut cr2 = SegmentCache::new();
+        let mut cw2 = SegmentCache::new();
+        let mut fy_r = |t: T| rail.y_cached(t, &mut cr);
+        let mut fy_w = |t: T| wheel.y_cached(t, &mut cw);
+        // lateral windows on which each placed curve is monotone in y_S: around the rail top and
+        // around the wheel's tape circle (y_w = 0); side faces that overhang after cant, roll or
+        // yaw are cut off there
+        let k_top = (T::to_f64(math::floor(rail.t_top)) as usize).min(rl - 1);
+        let (rk0, rk1) = monotone_window(|k| rail.node_y(k), rl, k_top);
+        let mut k_tape = 0usize;
+        for k in 0..wl {
+            if self.wheel.table.y[k.min(N - 1)] <= T::ZERO {
+                k_tape = k;
+            } else {
+                break;
+            }
+        }
+        let (wk0, wk1) = monotone_window(|k| fy_w(T::from_usize(k)), wl, k_tape);
+        if rk1 <= rk0 || wk1 <= wk0 {
+            return Err(Error::BadProfile(
+                "profile not monotone in y near the contact",
+            ));
+        }
+        let r_lo = rail.node_y(rk0);
+        let r_hi = rail.node_y(rk1);
+        let w_lo = fy_w(T::from_usize(wk0));
+        let w_hi = fy_w(T::from_usize(wk1));
         if !(math::is_finite(w_lo) && math::is_finite(w_hi)) {
             return Err(Error::NonFinite("wheel placement"));
         }
@@ -555,20 +668,20 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         self.dy = step;
         self.y0 = lo;
         let tol = math::c::<T>(1e-11) + math::c::<T>(8.0) * T::EPSILON * math::abs(hi);
-        let (mut kr, mut kw) = (0usize, 0usize);
-        let mut fr = (fy_r(T::ZERO), fy_r(T::ONE));
-        let mut fw = (fy_w(T::ZERO), fy_w(T::ONE));
+        let (mut kr, mut kw) = (rk0, wk0);
+        let mut fr = (fy_r(T::from_usize(rk0)), fy_r(T::from_usize(rk0 + 1)));
+        let mut fw = (fy_w(T::from_usize(wk0)), fy_w(T::from_usize(wk0 + 1)));
         let mut jmin = 0usize;
         let mut gmin = T::MAX;
         for j in 0..n {
             let y = lo + T::from_usize(j) * step;
             let y = math::clamp(y, lo, hi);
-            let tr = solve_forward(&fy_r, rl, &mut kr, &mut fr, y, tol)
+            let tr = solve_forward(&mut fy_r, rk1 + 1, &mut kr, &mut fr, y, tol)
                 .ok_or(Error::BadProfile("rail not monotone in y"))?;
-            let tw = solve_forward(&fy_w, wl, &mut kw, &mut fw, y, tol)
+            let tw = solve_forward(&mut fy_w, wk1 + 1, &mut kw, &mut fw, y, tol)
                 .ok_or(Error::BadProfile("wheel not monotone in y"))?;
-            let pr = rail.at(tr);
-            let pw = wheel.at(tw);
+            let pr = rail.at_cached(tr, &mut cr2);
+            let pw = wheel.at_cached(tw, &mut cw2);
             let gj = pw.z - pr.z;
             if !math::is_finite(gj) {
                 return Err(Error::NonFinite("gap"));
