@@ -15,7 +15,12 @@ fn all_configs() -> Vec<(&'static str, StripesConfig<f64>)> {
         ("recommended", rec),
         ("seed", StripesConfig::seed_literal()),
     ];
-    for h in [HMode::Eps0, HMode::EpsLocal, HMode::EpsSmoothed(2.0)] {
+    for h in [
+        HMode::Eps0,
+        HMode::EpsLocal,
+        HMode::EpsSmoothed(2.0),
+        HMode::EpsWeighted(2.0),
+    ] {
         for l in [L0Mode::Off, L0Mode::HertzB, L0Mode::PatchFraction(0.25)] {
             v.push((
                 "combo",

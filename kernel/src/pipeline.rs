@@ -8,8 +8,9 @@
 //! totals are summed. Per-cell results go only to the caller's [`CellSink`] (strip index = the
 //! global strip index of [`StripSet`]); wear per strip accumulates in the workspace.
 //!
-//! Defaults ([`PipelineConfig::recommended`]): STRIPES `EpsSmoothed(2 mm)` + `PatchFraction(0.25)`
-//! (methods.md §6 item 11), Ayasse–Chollet `StripA` reference ellipses with FaStrip (§5.3), FaStrip's
+//! Defaults ([`PipelineConfig::recommended`]): STRIPES `EpsLocal` + `PatchFraction(0.25)` (evidence in
+//! [`StripesConfig::recommended`]; the spec suggested `EpsSmoothed(2 mm)`)
+//! (methods.md §6 item 11 and the Manchester evidence), Ayasse–Chollet `StripA` reference ellipses with FaStrip (§5.3), FaStrip's
 //! `Contact5` large-spin rule and μp_n slip zone (§4.2), 32 strips × 32 cells per region (§0.5).
 
 use crate::adapt::{self, Adaptation, LocalEllipse, Method};
