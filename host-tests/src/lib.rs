@@ -10,3 +10,5 @@ pub mod influence;
 pub mod norm;
 pub mod profiles;
 pub mod table;
+pub mod tang;
+pub mod wear_ref;
