@@ -1581,3 +1581,37 @@ fn region_patch_inconsistent_counts_are_typed() {
         Some(Error::OutOfRange("strip index"))
     );
 }
+
+proptest! {
+    #![proptest_config(config(128))]
+
+    /// `Stripes::layout` with a tampered solution (public fields: region count beyond NR, garbage
+    /// region limits) and a sample slice that does not match the solve: typed error or finite
+    /// strips, never an out-of-bounds index.
+    #[test]
+    fn stripes_layout_tampered_solution(
+        nr in prop_oneof![0usize..=2, 3usize..10, Just(usize::MAX)],
+        lo in mostly(-5.0..0.0f64), hi in mostly(0.0..5.0f64), per in 0usize..40,
+        drop_last in any::<bool>(),
+    ) {
+        let s = StripesIn { n: 48, half: 8.0, shape: Shape::Parabola, param: 0.0, ca: 1e-3,
+                            cb: 5e-3, load: 5e4, zs: vec![0.0; 80], bad: vec![], cfg: 0 };
+        let samples = build_samples::<f64>(&s);
+        let mut st = Box::new(Stripes::<f64, 64, 8, 2>::new());
+        let mut sol = st.solve(&samples, 5e4, &Material::steel(), &stripes_cfg::<f64>(0)).unwrap();
+        sol.n_regions = nr;
+        for r in sol.regions.iter_mut() {
+            r.y_lo = lo;
+            r.y_hi = hi;
+        }
+        let used = if drop_last { &samples[..47] } else { &samples[..] };
+        let mut set = Box::new(StripSet::<f64, 32, 2>::new());
+        if st.layout(&sol, used, 5e4, per, &mut set).is_ok() {
+            prop_assert!(set.n_strips <= 32 && set.n_regions <= 2);
+            for j in 0..set.n_strips {
+                prop_assert!(set.y[j].is_finite() && set.a[j].is_finite() && set.pmax[j].is_finite());
+            }
+            prop_assert!(set.total_load.is_finite());
+        }
+    }
+}
