@@ -609,3 +609,103 @@ fn rail_placement_top_and_gauge() {
         }
     }
 }
+
+/// Yaw (§7.2, lowest wheel point per lateral row): without yaw the rigid contact of every
+/// sample is at x = 0; with yaw (right wheel at flange contact, y_ws = 7 mm, ψ = 16.8 mrad) the
+/// closed-form lowest point of the gap grid matches a brute-force search over the wheel surface
+/// (angle θ about the axle, axial position solved for the row's lateral position) to 1 µm in
+/// height and 0.05 mm in x, and the samples' x_c are the lowest points relative to x_ref.
+#[test]
+fn yaw_lowest_point_matches_brute_force() {
+    let (w, r) = tables();
+    let opts = PatchOptions {
+        samples: 32,
+        ..PatchOptions::default()
+    };
+    let mut ps = Box::new(Patches::<f64, 2, 32>::new());
+    let g0 = place(
+        &r,
+        &w,
+        WheelsetPose::from_contact(7.0, 0.0, -6.393e-3),
+        Side::Right,
+    );
+    contact_patches(&g0, 0.03, &opts, &mut ps).unwrap();
+    assert!(ps.items[0].frame.x_ref.abs() < 1e-9);
+    assert!(ps.items[0].samples.x_c.iter().all(|x| x.abs() < 1e-9));
+
+    let pose = WheelsetPose::from_contact(7.0, 0.0168, -6.393e-3);
+    let g = place(&r, &w, pose, Side::Right);
+    contact_patches(&g, 0.03, &opts, &mut ps).unwrap();
+    let f = ps.items[0].frame;
+    assert!(
+        f.x_ref.abs() > 0.5,
+        "yaw should move the flange contact longitudinally"
+    );
+    // side frame of the right wheel: mirrored, ψ_S = −ψ_T, φ_S = −φ_T, centre at −dy_T
+    let (psi, phi) = (-pose.yaw, -pose.roll);
+    let (cy, cz) = (-pose.dy, g.wheel.cz);
+    let u_off = 680.0 + 70.0;
+    let surface = |t: f64, th: f64| {
+        let p = w.point(t);
+        let (u, rr) = (p.y + u_off, 460.0 + p.z);
+        let (x1, y1, z1) = (
+            rr * th.sin(),
+            u * phi.cos() + rr * th.cos() * phi.sin(),
+            u * phi.sin() - rr * th.cos() * phi.cos(),
+        );
+        (
+            x1 * psi.cos() - y1 * psi.sin(),
+            x1 * psi.sin() + y1 * psi.cos() + cy,
+            z1 + cz,
+        )
+    };
+    let mut rows = 0;
+    for j in (0..g.n).step_by(3) {
+        if g.gap[j] > 0.5 {
+            continue;
+        }
+        rows += 1;
+        let y = g.y_at(j);
+        // brute force: for each θ, the profile parameter with lateral position y, then min z
+        let mut best = (f64::MAX, 0.0);
+        for k in 0..=4000 {
+            let th = -0.1 + 0.2 * k as f64 / 4000.0;
+            let (mut a, mut b) = (0.0, (w.len - 1) as f64);
+            for _ in 0..60 {
+                let m = 0.5 * (a + b);
+                if surface(m, th).1 < y {
+                    a = m
+                } else {
+                    b = m
+                }
+            }
+            let (x, _, z) = surface(0.5 * (a + b), th);
+            if z < best.0 {
+                best = (z, x);
+            }
+        }
+        let wp = g.wheel.at(g.wheel_t[j]);
+        assert!(
+            (wp.z - best.0).abs() < 1e-3 * 1e-3 + 1e-6,
+            "row {j}: z {} vs {}",
+            wp.z,
+            best.0
+        );
+        assert!(
+            (wp.x - best.1).abs() < 0.05,
+            "row {j}: x {} vs {}",
+            wp.x,
+            best.1
+        );
+        assert!((g.wheel_x[j] - wp.x).abs() < 1e-9);
+    }
+    assert!(rows >= 5, "{rows} rows checked");
+    // samples: x_c = lowest point of the paired wheel point − x_ref; at s ≈ 0 close to 0
+    let smp = &ps.items[0].samples;
+    let i0 = ((0.0 - smp.s0) / smp.ds) as usize;
+    assert!(
+        smp.x_c[i0].abs() < 0.5,
+        "x_c near the reference {}",
+        smp.x_c[i0]
+    );
+}

@@ -178,6 +178,7 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
     fr: &FrameS<T>,
     tr_ref: T,
     tw_ref: T,
+    x_ref: T,
     out: &mut PatchSamples<T, S>,
 ) -> Result<(), Error> {
     let ctx = Ctx { rail, wheel, fr };
@@ -220,6 +221,7 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
             out.ds
         };
         out.y_rail[i] = a.y;
+        out.x_c[i] = b.x - x_ref;
     }
     Ok(())
 }

@@ -48,8 +48,10 @@
 //! # Yaw
 //! The gap uses the wheel's lowest point per lateral row (see `placement`), so yaw moves the
 //! contact laterally and vertically as it should; the longitudinal curvature A uses the
-//! body-of-revolution formula cos δ/(2R) without the small yaw correction, and the patch's
-//! asymmetry in x under yaw (An et al. [33]) is not modelled (x_ref is reported).
+//! body-of-revolution formula cos δ/(2R) without the small yaw correction. The longitudinal
+//! position of each sample's rigid contact (the lowest wheel point) is reported as `x_c(s)`
+//! relative to `x_ref`, so a solver can shift its strips (h ≈ f_n + A (x − x_c)² − δ); the
+//! remaining yaw asymmetry of the gap in x (An et al. [33]) is not modelled.
 
 use super::isosceles;
 use super::placement::WheelRail;
@@ -196,6 +198,10 @@ pub struct PatchSamples<T, const S: usize> {
     pub width: [T; S],
     /// Lateral position y_S (side frame) of the rail point of the pair, mm (for plots/mapping).
     pub y_rail: [T; S],
+    /// Longitudinal position of the strip's rigid contact relative to the reference point,
+    /// x_c(s) = x(wheel's lowest point at the paired point) − x_ref, mm (0 without yaw). With yaw
+    /// the undeformed distance is h(x, s) ≈ f_n(s) + A(s)(x − x_c(s))² − δ to first order.
+    pub x_c: [T; S],
 }
 
 impl<T: Real, const S: usize> PatchSamples<T, S> {
@@ -213,6 +219,7 @@ impl<T: Real, const S: usize> PatchSamples<T, S> {
             radius: [T::ZERO; S],
             width: [T::ZERO; S],
             y_rail: [T::ZERO; S],
+            x_c: [T::ZERO; S],
         }
     }
 
@@ -751,10 +758,11 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
                 out.b_lat[i] = T::HALF * (wp.curvature + rp.curvature);
                 out.width[i] = out.ds;
                 out.y_rail[i] = rp.y;
+                out.x_c[i] = wp.x - frame.x_ref;
             }
         }
         Correspondence::Isosceles => {
-            isosceles::sample_isosceles(&rail, &wheel, &fr, tr_ref, tw_ref, out)?;
+            isosceles::sample_isosceles(&rail, &wheel, &fr, tr_ref, tw_ref, frame.x_ref, out)?;
         }
     }
     // normalise: min f_n = 0 (parabola-refined), approach = −min separation
