@@ -229,7 +229,8 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
 /// The rigid contact pair (θ_c = 90°) of a patch by isosceles traversal at vertical approach
 /// `dv`, searched over s ∈ [s_lo, s_hi] in `steps` equal steps (the seed's 0.5/0.1 mm arc steps
 /// correspond to steps = width/0.5 or width/0.1), refined by 40 bisections on s. Only pairs with
-/// negative separation (inside the penetrated zone) qualify.
+/// negative separation (inside the penetrated zone) qualify; θ_c = 90° holds at every extremum of
+/// the separation, so of all such crossings the deepest one is returned.
 ///
 /// Returns the pair; its `normal_angle` is the isosceles contact angle and the rail point A is
 /// `geom.rail.at(pair.t_rail)`. Errors: `NoContact` if no sign change is found.
@@ -268,6 +269,7 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
     let half_pi = T::PI * T::HALF;
     let ds = (s_hi - s_lo) / T::from_usize(steps);
     let mut prev = ctx.pair_at(tr0, tw0, s_lo);
+    let mut best: Option<IsoscelesPair<T>> = None;
     for i in 1..=steps {
         let s = s_lo + T::from_usize(i) * ds;
         let p = ctx.pair_at(prev.t_rail, prev.t_wheel, s);
@@ -289,9 +291,13 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
                 }
             }
             let _ = b;
-            return Ok(a);
+            // θ_c = 90° at every extremum of the separation: keep the deepest
+            match best {
+                Some(q) if q.separation <= a.separation => {}
+                _ => best = Some(a),
+            }
         }
         prev = p;
     }
-    Err(Error::NoContact)
+    best.ok_or(Error::NoContact)
 }
