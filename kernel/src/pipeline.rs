@@ -221,6 +221,9 @@ pub fn samples_from_arrays<T: Real>(
 
 /// Runs the pipeline on one patch: `samples` (fine lateral samples in the contact frame), normal
 /// load `load` (N), creepages `cr`; every contact cell goes to `sink` (`&mut ()` for none).
+///
+/// Errors: those of STRIPES, the adaptation and the tangential solver; `NonFinite("wear depth")`
+/// if the wear map overflows (the cells already sent to `sink` stay sent).
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub fn solve_patch<
@@ -283,6 +286,11 @@ pub fn solve_patch<
         let mut wmax = T::ZERO;
         for j in reg.first..reg.first + reg.count {
             if let Some(d) = ws.wear.depth.get(j) {
+                // A wear map that validates (finite, positive entries) can still overflow
+                // k·p·|s|·δx/H (e.g. k = 1e307 with H = 1e-6): a typed error, not ∞/NaN wear.
+                if !math::is_finite(*d) {
+                    return Err(Error::NonFinite("wear depth"));
+                }
                 wmax = math::max(wmax, *d);
             }
         }

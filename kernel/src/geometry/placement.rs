@@ -659,7 +659,14 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
             return Err(Error::NoContact);
         }
         let mut step = self.dy;
-        let mut n = T::to_f64((hi - lo) / step) as usize + 1;
+        // Saturate before the integer conversion: a tiny finite step (e.g. 1e-300 mm) gives a
+        // ratio beyond usize, and `as usize + 1` would overflow (panic in debug, n = 0 in release).
+        let ratio = T::to_f64((hi - lo) / step);
+        let mut n = if ratio < (M - 1) as f64 {
+            ratio as usize + 1
+        } else {
+            M + 1
+        };
         if n > M {
             n = M;
             step = (hi - lo) / T::from_usize(M - 1);
