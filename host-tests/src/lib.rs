@@ -8,3 +8,5 @@ pub mod data;
 pub mod influence;
 pub mod profiles;
 pub mod table;
+pub mod tang;
+pub mod wear_ref;
