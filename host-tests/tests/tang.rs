@@ -252,6 +252,21 @@ fn contact_fastsim_exact_44() {
     assert_eq!(w.len(), 44);
     assert!(w.iter().all(|&z| z >= 0.0 && z.is_finite()));
     assert!(w.iter().any(|&z| z > 0.0));
+    // The kernel's wear law (kernel/src/wear.rs) applied to the same TANG cells gives the same
+    // strip depths as this reference (same law, independent code).
+    let kmap = wrc_kernel::wear::WearMap::<f64>::kth();
+    let mut kw = wrc_kernel::wear::StripWear::<f64, 44>::new();
+    for j in 0..44 {
+        for i in 0..44 {
+            let k = r.grid.idx(i, j);
+            if r.state[k] == ElementState::Slip {
+                kw.add_cell(&kmap, j, pn[k], r.sx[k].hypot(r.sy[k]), 30_000.0, r.grid.dx);
+            }
+        }
+    }
+    for (j, (kd, rd)) in kw.depth.iter().zip(&w).enumerate() {
+        assert!((kd - rd).abs() <= 1e-12 * rd.abs().max(1e-30), "{j}");
+    }
 }
 
 /// CONTACT `tractcurv.inp` exact creep curve (Coulomb μ = 0.33, cases with curve =
@@ -291,4 +306,32 @@ fn contact_tractcurv_exact_curve() {
     }
     println!("worst |ΔFx|/(μN) = {worst:.4}");
     assert!(worst < 0.02);
+}
+
+/// Kalker's linear theory for a/b = 0.5 and 2 (ν = 0.28, §2: 3.7335, 3.0256, 0.9435 and
+/// 5.2037, 4.9715, 2.6566), Richardson of 20 and 40 elements per semi-axis. About a minute.
+#[test]
+#[ignore]
+fn kalker_linear_theory_ellipses_fine() {
+    for (a, b, kalker) in [
+        (4.0, 8.0, [3.7335, 3.0256, 0.9435]),
+        (8.0, 4.0, [5.2037, 4.9715, 2.6566]),
+    ] {
+        let c20 = linear_coefficients(a, b, 20);
+        let c40 = linear_coefficients(a, b, 40);
+        for k in 0..3 {
+            let r = richardson(c20[k], c40[k]);
+            println!(
+                "a/b = {}: C{}: n=20 {:.4}, n=40 {:.4}, Richardson {:.4}, Kalker {:.4} ({:+.2} %)",
+                a / b,
+                ["11", "22", "23"][k],
+                c20[k],
+                c40[k],
+                r,
+                kalker[k],
+                100.0 * (r / kalker[k] - 1.0)
+            );
+            assert!((r / kalker[k] - 1.0).abs() < 0.01);
+        }
+    }
 }
