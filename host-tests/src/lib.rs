@@ -5,7 +5,9 @@
 
 pub mod cases;
 pub mod data;
+pub mod fftconv;
 pub mod influence;
+pub mod norm;
 pub mod profiles;
 pub mod table;
 pub mod tang;

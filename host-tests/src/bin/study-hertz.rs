@@ -167,7 +167,7 @@ fn main() {
     for (ie, _) in ELLIPSES.iter().enumerate() {
         for (is, _) in SPIN.iter().enumerate() {
             for (ia, _) in ALPHA_DEG.iter().enumerate() {
-                if check && !(is == 2 && (ia == 4 || ia == 6) && ie % 2 == 0) {
+                if check && !(is == 2 && ia == 4 && ie % 2 == 0) {
                     continue;
                 }
                 items.push((ie, is, ia));
