@@ -335,3 +335,54 @@ fn kalker_linear_theory_ellipses_fine() {
         }
     }
 }
+
+/// The same CONTACT case with NORM's pressure (load control, same 44 × 44 grid) instead of Hertz at
+/// element centres: TANG on the normal solution, as CONTACT computes it.
+#[test]
+fn contact_fastsim_exact_44_on_norm_pressure() {
+    let (a, b, fnn, mu) = (8.0, 4.0, 82_000.0, 0.3);
+    let mat = wrc_kernel::Material::from_g_nu(G, NU).unwrap();
+    let hz = wrc_kernel::hertz::curvatures_from_semi_axes(a, b, fnn, &mat).unwrap();
+    let grid = Grid::hertz(a, b, 20, 1.1);
+    let ngrid = wrc_host_tests::norm::Grid {
+        mx: grid.mx,
+        my: grid.my,
+        dx: grid.dx,
+        dy: grid.dy,
+        x0: grid.x0,
+        y0: grid.y0,
+    };
+    let gap: Vec<f64> = (0..grid.len())
+        .map(|k| {
+            let (x, y) = (grid.x(k % grid.mx), grid.y(k / grid.mx));
+            hz.curv_a * x * x + hz.curv_b * y * y
+        })
+        .collect();
+    let ns = wrc_host_tests::norm::solve(
+        &ngrid,
+        &gap,
+        &mat,
+        wrc_host_tests::norm::Control::Load(fnn),
+        &Default::default(),
+    )
+    .unwrap();
+    let r = TangSolver::new(grid, G, NU).solve(
+        &ns.pressure,
+        mu,
+        Creepage {
+            xi: 0.0,
+            eta: -6.25e-4,
+            phi: 6.25e-4,
+        },
+        &TangOptions::default(),
+        None,
+    );
+    let fy = r.fy / (mu * fnn);
+    println!(
+        "44x44 on NORM: Fy/(μN) {fy:.4} (CONTACT -0.6074), Mz {:.4e} (-4.821e4), contact {} (1276), slip {} (920), sweeps {}",
+        r.mz, r.n_contact, r.n_slip, r.sweeps
+    );
+    assert!(r.converged);
+    assert!((fy + 0.6074).abs() < 0.02);
+    assert!((r.mz + 4.821e4).abs() / (mu * fnn * (a * b).sqrt()) < 0.02);
+}
