@@ -27,6 +27,7 @@ pub mod profile;
 pub mod real;
 pub mod stripes;
 pub mod wear;
+pub mod wheel;
 
 pub use error::Error;
 pub use material::Material;

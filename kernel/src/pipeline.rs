@@ -309,3 +309,176 @@ pub fn solve_patch<
     }
     Ok(res)
 }
+
+/// Passes of the frame/approach fixed point of [`solve_wheel`] (including the 5 µm start).
+pub const FRAME_PASSES: u32 = 8;
+
+/// Result of [`solve_wheel`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WheelResult<T, const NR: usize> {
+    /// The main patch's result (regions, forces, wear extrema).
+    pub patch: PatchResult<T, NR>,
+    /// Its contact frame (reference point, angle, rolling radius, normal approach).
+    pub frame: crate::geometry::PatchFrame<T>,
+    /// Creepages used (at the frame's reference point).
+    pub creepage: Creepage<T>,
+    /// Frame/approach fixed-point passes (≤ [`FRAME_PASSES`]).
+    pub frame_passes: u32,
+    /// |Δapproach| ≤ 1e-3 of the approach and |Δy_ref| ≤ 0.01 mm reached.
+    pub frame_converged: bool,
+    /// Number of patches the geometry found (only the main one is solved; see [`solve_wheel`]).
+    pub patches_found: usize,
+}
+
+/// Caller-owned workspace of [`solve_wheel`]: the patch pipeline's [`Workspace`], the geometry's
+/// patches (`KP` patches of `NS` samples) and a sample buffer.
+pub struct WheelWorkspace<
+    T,
+    const KP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+> {
+    /// Patch pipeline workspace.
+    pub patch: Workspace<T, NS, NR, S, C, SS>,
+    /// Geometry patches of the last call.
+    pub patches: crate::geometry::Patches<T, KP, NS>,
+    samples: [StripSample<T>; NS],
+}
+
+/// The default wheel workspace: 2 geometry patches of 256 samples, [`DefaultWorkspace`].
+pub type DefaultWheelWorkspace<T> = WheelWorkspace<T, 2, 256, 4, 32, 32, 128>;
+
+impl<
+        T: Real,
+        const KP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > WheelWorkspace<T, KP, NS, NR, S, C, SS>
+{
+    /// Empty workspace (not `const`: the geometry's `Patches::new` is not).
+    pub fn new() -> Self {
+        Self {
+            patch: Workspace::new(),
+            patches: crate::geometry::Patches::new(),
+            samples: [StripSample {
+                y: T::ZERO,
+                dy: T::ZERO,
+                z: T::ZERO,
+                curv_a: T::ZERO,
+                curv_b: T::ZERO,
+                xc: T::ZERO,
+            }; NS],
+        }
+    }
+}
+
+impl<
+        T: Real,
+        const KP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > Default for WheelWorkspace<T, KP, NS, NR, S, C, SS>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+fn main_samples<T: Real, const KP: usize, const NS: usize>(
+    patches: &crate::geometry::Patches<T, KP, NS>,
+    out: &mut [StripSample<T>; NS],
+) -> Result<(usize, usize), Error> {
+    let k = patches.main_index().ok_or(Error::NoContact)?;
+    let s = &patches.items[k].samples;
+    let n = samples_from_arrays(|i| s.s(i), &s.width, &s.f_n, &s.a_long, &s.b_lat, s.n, out)?;
+    Ok((k, n))
+}
+
+/// The default pipeline per wheel: geometry (weighted contact frame, §7.2 step 6) → STRIPES under
+/// the normal load `load` (N) → Ayasse–Chollet → FaStrip → wear, with the frame/approach fixed
+/// point of §7.2 (start at a 5 µm normal approach, then the frame at STRIPES' approach, at most
+/// [`FRAME_PASSES`] passes in all; stop when the approach moves < 1e-3 relative and y_ref < 0.01 mm). Creepages from
+/// `kin` at the final frame (§7.4).
+///
+/// Limitation (documented, [UNCERTAIN] in methods.md §6 item 8): when the geometry returns several
+/// patches with separate frames (regions more than `d_sep` apart), only the main (heaviest) patch
+/// is solved and carries the whole load; `patches_found` reports the count. Regions within one
+/// patch (tread + flange root closer than `d_sep`) are handled by STRIPES' regions.
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub fn solve_wheel<
+    T: Real,
+    K: CellSink<T>,
+    const N: usize,
+    const M: usize,
+    const KP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &crate::geometry::WheelRail<'_, T, N, M>,
+    load: T,
+    kin: &crate::geometry::Kinematics<T>,
+    opts: &crate::geometry::PatchOptions<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut WheelWorkspace<T, KP, NS, NR, S, C, SS>,
+    sink: &mut K,
+) -> Result<WheelResult<T, NR>, Error> {
+    use crate::geometry::patches_at_normal_approach;
+    check_positive(load, "N")?;
+    let mut dn = math::c::<T>(0.005);
+    let mut y_prev = T::MAX;
+    let mut passes = 0;
+    let mut converged = false;
+    for _ in 0..FRAME_PASSES {
+        patches_at_normal_approach(geom, dn, opts, &mut ws.patches)?;
+        let (k, n) = main_samples(&ws.patches, &mut ws.samples)?;
+        let y_ref = ws.patches.items[k].frame.y_ref_rail;
+        let sol: StripesSolution<T, NR> =
+            ws.patch
+                .stripes
+                .solve(&ws.samples[..n], load, mat, &cfg.stripes)?;
+        let d_new = sol.delta;
+        let done = math::abs(d_new - dn) <= math::c::<T>(1e-3) * dn
+            && math::abs(y_ref - y_prev) <= math::c::<T>(0.01);
+        y_prev = y_ref;
+        dn = d_new;
+        passes += 1;
+        if done {
+            converged = true;
+            break;
+        }
+    }
+    if !converged {
+        patches_at_normal_approach(geom, dn, opts, &mut ws.patches)?;
+    }
+    let (k, n) = main_samples(&ws.patches, &mut ws.samples)?;
+    let frame = ws.patches.items[k].frame;
+    let c = crate::geometry::creepages(geom, &frame, kin)?;
+    let cr = Creepage {
+        xi: c.xi,
+        eta: c.eta,
+        phi: c.phi,
+    };
+    let patch = solve_patch(&ws.samples[..n], load, &cr, mat, cfg, &mut ws.patch, sink)?;
+    Ok(WheelResult {
+        patch,
+        frame,
+        creepage: cr,
+        frame_passes: passes,
+        frame_converged: converged,
+        patches_found: ws.patches.len,
+    })
+}

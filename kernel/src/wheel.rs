@@ -1,0 +1,510 @@
+//! One wheel from its wheelset state: geometry → load split over the patches → per-patch pipeline
+//! (STRIPES → adaptation → FASTSIM/FaStrip → KTH wear), the way a vehicle-dynamics code calls the
+//! kernel every time step.
+//!
+//! Input: a placed wheel/rail pair ([`WheelRail`]: profiles, track set-up, lateral shift, yaw, roll,
+//! side), the **vertical** wheel load F_z (N, along z_T) and the wheelset kinematics (or prescribed
+//! creepages). Output: every contact patch with its frame (reference point, contact angle,
+//! rolling radius), creepages, normal load, STRIPES/tangential results and wear.
+//!
+//! ## Load split (methods.md §6 item 8, §7.2)
+//! All patches share the wheel's rigid vertical displacement δ_v. At a given δ_v the geometry
+//! gives each patch its frame and its own normal approach a_k (the interpenetration of its samples,
+//! i.e. δ_v projected on the patch normal, including the weighted reference of §7.2 evaluated at
+//! that approach — the frame/approach fixed point is thereby solved together with the load).
+//! Each patch's normal load N_k is the STRIPES load whose approach equals a_k (STRIPES is
+//! load-controlled; the inverse is found by a safeguarded secant on (ln N, ln δ), where the
+//! relation is nearly linear, N ∝ δ^{3/2} for Hertz). δ_v then solves
+//! **Σ_k N_k(δ_v) cos δ_k = F_z** (the vertical components; the vertical components of the
+//! tangential forces are neglected, as in seed A and CONTACT's load control on F_z·n), by the
+//! same secant in (ln F, ln δ_v).
+//!
+//! The vertical load also carries the vertical component of each patch's lateral creep force:
+//! with e_y = n × e_x, **F_z = Σ_k (N_k cos δ_k + F_y,k e_y,z)**, e_y,z = −sin δ_k (right wheel),
+//! +sin δ_k (left wheel) — at flange contact (δ ≈ 60°, full slip) this term is a third of F_z
+//! (CONTACT's right wheel at y_ws = 6.5 mm: N cos δ = 6179 N, F_y sin δ = 3822 N). It is
+//! coupled through the ratios r_k = F_y,k/N_k of the previous tangential solve: the load loop
+//! solves Σ N_k (cos δ_k + r_k e_y,z) = F_z, the tangential solve updates r_k, until the ratios
+//! change by less than 1e-5 (at most [`MAX_COUPLING`] rounds; a fixed point with contraction
+//! μ tan δ < 1 in full slip, exact in one round when the ratio is load-independent).
+//!
+//! Bounds: at most [`MAX_OUTER`] geometry passes and [`MAX_INNER`] STRIPES solves per patch and
+//! pass; the result reports the passes used and whether both loops met their tolerances
+//! (`converged`); a non-converged result is still the last consistent state (finite), flagged.
+//! Comparisons are written as `!(x > 0)` on purpose where NaN must count as "not positive".
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+use crate::error::{check_positive, Error};
+use crate::geometry::{
+    contact_patches, creepages, Kinematics, PatchFrame, PatchOptions, Patches, WheelRail,
+};
+use crate::math;
+use crate::patch::{CellOut, CellSink, Creepage};
+use crate::pipeline::{solve_patch, PatchResult, PipelineConfig, Workspace};
+use crate::stripes::StripSample;
+use crate::{Material, Real};
+
+/// Maximum geometry passes (outer load loop on δ_v).
+pub const MAX_OUTER: u32 = 30;
+/// Maximum STRIPES solves per patch and pass (inverse load control).
+pub const MAX_INNER: u32 = 16;
+/// Maximum rounds of the normal–tangential coupling through the vertical load.
+pub const MAX_COUPLING: u32 = 8;
+
+/// Options of [`solve_wheel`].
+#[derive(Clone, Copy, Debug)]
+pub struct WheelConfig<T> {
+    /// The per-patch pipeline.
+    pub pipeline: PipelineConfig<T>,
+    /// Geometry patch options (reference rule, correspondence, samples per patch, …).
+    pub patches: PatchOptions<T>,
+    /// Wheelset kinematics for the creepages (ignored where `creepage` is set).
+    pub kinematics: Kinematics<T>,
+    /// Prescribed creepages for every patch instead of the kinematics (`None`: kinematics).
+    pub creepage: Option<Creepage<T>>,
+    /// Relative tolerance on the vertical load and on each patch's approach (default 1e-6).
+    pub tol: T,
+}
+
+impl<T: Real> WheelConfig<T> {
+    /// The kernel's defaults: recommended pipeline with friction `mu`, speed `speed` (mm/s),
+    /// nominal rolling (Ω = V/R0) with radius `r0` (mm), weighted reference, projection.
+    pub fn recommended(mu: T, speed: T, r0: T) -> Self {
+        Self {
+            pipeline: PipelineConfig::recommended(mu, speed),
+            patches: PatchOptions {
+                samples: 128,
+                ..PatchOptions::default()
+            },
+            kinematics: Kinematics::nominal(speed, r0),
+            creepage: None,
+            tol: math::c(1e-6),
+        }
+    }
+}
+
+/// One patch of the wheel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WheelPatch<T, const NR: usize> {
+    /// Frame: reference point, contact angle, rolling radius, approach.
+    pub frame: PatchFrame<T>,
+    /// Creepages used.
+    pub creepage: Creepage<T>,
+    /// Normal load N_k, N.
+    pub load: T,
+    /// Pipeline result (regions, forces on the wheel in the patch frame, pmax, area, wear).
+    pub result: PatchResult<T, NR>,
+}
+
+/// Result of [`solve_wheel`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WheelResult<T, const K: usize, const NR: usize> {
+    /// Patches (`patches[..n]`), ordered as the geometry orders them.
+    pub patches: [Option<WheelPatch<T, NR>>; K],
+    /// Number of patches.
+    pub n: usize,
+    /// Rigid vertical approach δ_v of the wheel, mm.
+    pub vertical_approach: T,
+    /// Σ N_k cos δ_k reached, N.
+    pub vertical_load: T,
+    /// Geometry passes used.
+    pub iterations: u32,
+    /// Load and approach tolerances met in every loop, and every STRIPES solve converged.
+    pub converged: bool,
+}
+
+/// Receives the cells of every patch; `begin_patch(k)` announces patch k.
+pub trait WheelSink<T>: CellSink<T> {
+    /// Cells that follow belong to patch `k`.
+    fn begin_patch(&mut self, _k: usize) {}
+}
+
+impl<T> WheelSink<T> for () {}
+
+/// Caller-owned storage of [`solve_wheel`] (const-constructible: can live in a `static`).
+/// `K` patches of `NP` geometry samples; the pipeline workspace parameters as
+/// [`Workspace`].
+pub struct WheelWorkspace<
+    T,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+> {
+    /// Geometry patches of the last pass.
+    pub patches: Patches<T, K, NP>,
+    /// STRIPES samples of one patch.
+    pub samples: [StripSample<T>; NP],
+    /// The per-patch pipeline workspace.
+    pub pipeline: Workspace<T, NS, NR, S, C, SS>,
+    loads: [T; K],
+    ratio: [T; K],
+}
+
+/// The default wheel workspace: 4 patches of 128 samples, the default pipeline workspace.
+pub type DefaultWheelWorkspace<T> = WheelWorkspace<T, 4, 128, 256, 4, 32, 32, 128>;
+
+impl<
+        T: Real,
+        const K: usize,
+        const NP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > WheelWorkspace<T, K, NP, NS, NR, S, C, SS>
+{
+    /// Empty workspace.
+    pub fn new() -> Self {
+        Self {
+            patches: Patches::new(),
+            samples: [StripSample::default(); NP],
+            pipeline: Workspace::new(),
+            loads: [T::ZERO; K],
+            ratio: [T::ZERO; K],
+        }
+    }
+}
+
+impl<
+        T: Real,
+        const K: usize,
+        const NP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    > Default for WheelWorkspace<T, K, NP, NS, NR, S, C, SS>
+{
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+/// Fills `out` with the STRIPES samples of patch `k`; returns the count.
+fn samples_of<T: Real, const K: usize, const NP: usize>(
+    ps: &Patches<T, K, NP>,
+    k: usize,
+    out: &mut [StripSample<T>; NP],
+) -> usize {
+    let s = &ps.items[k].samples;
+    let n = s.n.min(NP);
+    for (i, o) in out.iter_mut().enumerate().take(n) {
+        *o = StripSample {
+            y: s.s(i),
+            dy: s.width[i],
+            z: s.f_n[i],
+            curv_a: s.a_long[i],
+            curv_b: s.b_lat[i],
+            xc: s.x_c[i],
+        };
+    }
+    n
+}
+
+/// Secant step in log–log coordinates towards `target` for a monotone power-law-like
+/// relation y(x): from the points (x0, y0), (x1, y1) (or a single point with exponent `p0`).
+fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> T {
+    let (lx1, ly1) = (math::ln(x1), math::ln(y1));
+    let mut p = p0;
+    if x0 > T::ZERO && y0 > T::ZERO && x0 != x1 {
+        let s = (ly1 - math::ln(y0)) / (lx1 - math::ln(x0));
+        // keep the local exponent physical (contact stiffening: between 0.5 and 4)
+        if math::is_finite(s) {
+            p = math::clamp(s, math::c(0.5), math::c(4.0));
+        }
+    }
+    let step = math::clamp((math::ln(target) - ly1) / p, math::c(-3.0), math::c(3.0));
+    x1 * math::exp(step)
+}
+
+/// STRIPES load whose approach equals `a` (mm) on `samples`; returns (load, converged).
+fn load_for_approach<
+    T: Real,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    samples: &[StripSample<T>],
+    a: T,
+    guess: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+) -> Result<(T, bool), Error> {
+    let mut n1 = guess;
+    let (mut n0, mut d0) = (T::ZERO, T::ZERO);
+    for _ in 0..MAX_INNER {
+        let sol = ws.stripes.solve(samples, n1, mat, &cfg.pipeline.stripes)?;
+        let d1 = sol.delta;
+        if !(d1 > T::ZERO) || !math::is_finite(d1) {
+            return Err(Error::NonFinite("stripes approach"));
+        }
+        if math::abs(d1 - a) <= cfg.tol * a {
+            return Ok((n1, sol.converged));
+        }
+        // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
+        let next = loglog_step_inverse(d0, n0, d1, n1, a);
+        n0 = n1;
+        d0 = d1;
+        n1 = next;
+    }
+    Ok((n1, false))
+}
+
+/// The inverse relation N(δ): secant on (ln δ, ln N) from the last two solves, exponent 1.5
+/// (Hertz) for the first step.
+fn loglog_step_inverse<T: Real>(d0: T, n0: T, d1: T, n1: T, a: T) -> T {
+    let mut p = math::c::<T>(1.5);
+    if d0 > T::ZERO && n0 > T::ZERO && d0 != d1 {
+        let s = (math::ln(n1) - math::ln(n0)) / (math::ln(d1) - math::ln(d0));
+        if math::is_finite(s) {
+            p = math::clamp(s, math::c(0.25), math::c(4.0));
+        }
+    }
+    let step = math::clamp(
+        p * (math::ln(a) - math::ln(d1)),
+        math::c(-4.0),
+        math::c(4.0),
+    );
+    n1 * math::exp(step)
+}
+
+/// e_y,z of a patch: the vertical component of its lateral axis (−sin δ right, +sin δ left).
+fn ey_z<T: Real, const N: usize, const M: usize>(geom: &WheelRail<'_, T, N, M>, angle: T) -> T {
+    match geom.side {
+        crate::geometry::Side::Left => math::sin(angle),
+        crate::geometry::Side::Right => -math::sin(angle),
+    }
+}
+
+/// The load loop: δ_v such that Σ N_k (cos δ_k + r_k e_y,z) = `fz` with the ratios in
+/// `ws.ratio`; leaves the patches and loads of the last pass in `ws`. Returns
+/// (δ_v, vertical load reached, passes, converged).
+fn split_load<
+    T: Real,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    fz: T,
+    dv_start: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+) -> Result<(T, T, u32, bool), Error> {
+    let mut dv = dv_start;
+    let (mut dv0, mut f0) = (T::ZERO, T::ZERO);
+    let mut fsum = T::ZERO;
+    for pass in 0..MAX_OUTER {
+        contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+        fsum = T::ZERO;
+        let mut inner_ok = true;
+        let np = ws.patches.len.min(K);
+        for k in 0..np {
+            let frame = ws.patches.items[k].frame;
+            let a = frame.approach;
+            // the previous pass's load of this patch slot is the best first guess
+            let guess = if ws.loads[k] > T::ZERO {
+                ws.loads[k]
+            } else {
+                fz
+            };
+            ws.loads[k] = T::ZERO;
+            if !(a > T::ZERO) {
+                continue;
+            }
+            let n = samples_of(&ws.patches, k, &mut ws.samples);
+            match load_for_approach(&ws.samples[..n], a, guess, mat, cfg, &mut ws.pipeline) {
+                Ok((nk, ok)) => {
+                    ws.loads[k] = nk;
+                    inner_ok &= ok;
+                    let factor = math::cos(frame.angle) + ws.ratio[k] * ey_z(geom, frame.angle);
+                    fsum += nk * factor;
+                }
+                // a sliver of a patch too small for STRIPES carries no load
+                Err(Error::NoContact) | Err(Error::GridTooSmall(_)) => {}
+                Err(e) => return Err(e),
+            }
+        }
+        if !(fsum > T::ZERO) {
+            // not yet in contact (or no upward load): press further
+            dv *= T::TWO;
+            if dv > math::c(5.0) {
+                return Err(Error::NoContact);
+            }
+            continue;
+        }
+        if math::abs(fsum - fz) <= cfg.tol * fz {
+            return Ok((dv, fsum, pass + 1, inner_ok));
+        }
+        let next = loglog_step(dv0, f0, dv, fsum, fz, math::c(1.5));
+        dv0 = dv;
+        f0 = fsum;
+        dv = next;
+    }
+    Ok((dv, fsum, MAX_OUTER, false))
+}
+
+/// Solves one wheel: finds δ_v with Σ_k (N_k cos δ_k + F_y,k e_y,z) = `fz` (N), then runs the
+/// pipeline on every patch, sending its cells to `sink` (after `sink.begin_patch(k)`). See the
+/// module docs.
+///
+/// Errors: `NonPositive("fz")`, `NoContact` when no δ_v up to 5 mm brings the profiles into
+/// contact, and the errors of geometry, STRIPES and the pipeline.
+#[allow(clippy::too_many_arguments)]
+pub fn solve_wheel<
+    T: Real,
+    W: WheelSink<T>,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    fz: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    sink: &mut W,
+) -> Result<WheelResult<T, K, NR>, Error> {
+    check_positive(fz, "fz")?;
+    check_positive(cfg.tol, "tol")?;
+    ws.ratio = [T::ZERO; K];
+    ws.loads = [T::ZERO; K];
+    let mut dv = math::c::<T>(0.05);
+    let mut passes = 0;
+    let mut ok = false;
+    let mut vload = T::ZERO;
+    let mut coupled = false;
+    for round in 0..MAX_COUPLING {
+        let (d, f, p, c) = split_load(geom, fz, dv, mat, cfg, ws)?;
+        dv = d;
+        vload = f;
+        passes += p;
+        ok = c;
+        // tangential forces of every patch at these loads → new ratios
+        let mut change = T::ZERO;
+        let np = ws.patches.len.min(K);
+        for k in 0..np {
+            let nk = ws.loads[k];
+            if !(nk > T::ZERO) {
+                continue;
+            }
+            let cr = patch_creepage(geom, &ws.patches.items[k].frame, cfg)?;
+            let n = samples_of(&ws.patches, k, &mut ws.samples);
+            let r = solve_patch(
+                &ws.samples[..n],
+                nk,
+                &cr,
+                mat,
+                &cfg.pipeline,
+                &mut ws.pipeline,
+                &mut (),
+            )?;
+            let ratio = r.totals.fy / nk;
+            change = math::max(change, math::abs(ratio - ws.ratio[k]));
+            ws.ratio[k] = ratio;
+        }
+        if round > 0 && change < math::c(1e-5) {
+            coupled = true;
+            break;
+        }
+    }
+    // Final pass at the converged ratios: the load split is consistent with the ratios used.
+    let (d, f, p, c) = split_load(geom, fz, dv, mat, cfg, ws)?;
+    dv = d;
+    vload = if f > T::ZERO { f } else { vload };
+    passes += p;
+    ok &= c;
+    let mut res = WheelResult {
+        patches: [None; K],
+        n: 0,
+        vertical_approach: dv,
+        vertical_load: vload,
+        iterations: passes,
+        converged: ok && coupled,
+    };
+    let np = ws.patches.len.min(K);
+    for k in 0..np {
+        let nk = ws.loads[k];
+        if !(nk > T::ZERO) {
+            continue;
+        }
+        let frame = ws.patches.items[k].frame;
+        let cr = patch_creepage(geom, &frame, cfg)?;
+        let n = samples_of(&ws.patches, k, &mut ws.samples);
+        sink.begin_patch(res.n);
+        let r = solve_patch(
+            &ws.samples[..n],
+            nk,
+            &cr,
+            mat,
+            &cfg.pipeline,
+            &mut ws.pipeline,
+            &mut Forward(sink),
+        )?;
+        res.converged &= r.converged;
+        if res.n < K {
+            res.patches[res.n] = Some(WheelPatch {
+                frame,
+                creepage: cr,
+                load: nk,
+                result: r,
+            });
+            res.n += 1;
+        }
+    }
+    if res.n == 0 {
+        return Err(Error::NoContact);
+    }
+    Ok(res)
+}
+
+/// Creepages of a patch: prescribed, or from the kinematics at its reference point.
+fn patch_creepage<T: Real, const N: usize, const M: usize>(
+    geom: &WheelRail<'_, T, N, M>,
+    frame: &PatchFrame<T>,
+    cfg: &WheelConfig<T>,
+) -> Result<Creepage<T>, Error> {
+    match cfg.creepage {
+        Some(c) => Ok(c),
+        None => {
+            let c = creepages(geom, frame, &cfg.kinematics)?;
+            Ok(Creepage {
+                xi: c.xi,
+                eta: c.eta,
+                phi: c.phi,
+            })
+        }
+    }
+}
+
+/// Forwards cells to a wheel sink.
+struct Forward<'a, W>(&'a mut W);
+
+impl<T, W: WheelSink<T>> CellSink<T> for Forward<'_, W> {
+    #[inline]
+    fn cell(&mut self, j: usize, i: usize, out: &CellOut<T>) {
+        self.0.cell(j, i, out);
+    }
+}
