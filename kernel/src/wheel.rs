@@ -7,6 +7,10 @@
 //! creepages). Output: every contact patch with its frame (reference point, contact angle,
 //! rolling radius), creepages, normal load, STRIPES/tangential results and wear.
 //!
+//! Relation to [`crate::pipeline::solve_wheel`]: that function prescribes the **normal** load of
+//! the main patch and solves only that patch; this one prescribes the **vertical** wheel load,
+//! as a vehicle model knows it, and splits it over every patch.
+//!
 //! ## Load split (methods.md §6 item 8, §7.2)
 //! All patches share the wheel's rigid vertical displacement δ_v. At a given δ_v the geometry
 //! gives each patch its frame and its own normal approach a_k (the interpenetration of its samples,
