@@ -5,6 +5,7 @@ mod doc;
 mod elliptic;
 mod plot;
 mod sink;
+mod sweep;
 mod timing;
 mod wheelrail;
 
@@ -140,7 +141,7 @@ fn main() {
     let cli = Cli::parse();
     let r = match &cli.command {
         Command::Solve(a) => solve(a),
-        Command::Sweep(_) => Err("wrc sweep is not available in this build".into()),
+        Command::Sweep(a) => sweep::run(a),
     };
     if let Err(e) = r {
         eprintln!("wrc: error: {e}");
