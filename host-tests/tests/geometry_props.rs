@@ -709,3 +709,51 @@ fn yaw_lowest_point_matches_brute_force() {
         smp.x_c[i0]
     );
 }
+
+/// The isosceles rigid pair is the deepest θ_c = 90° pair: on the flat-topped (plateau) gap of
+/// mbench y_ws = 0 and on the two-region patch of y_ws = 5 (right) it coincides with the deepest
+/// point (Argmin) and its depth with the patch's normal approach.
+#[test]
+fn isosceles_rigid_pair_is_the_deepest() {
+    let (w, r) = tables();
+    for (y_ws, yaw, roll, appr) in [(0.0, 0.0, 0.0, 0.01596), (5.0, 0.012, -3.554e-4, 0.02719)] {
+        let g = place(
+            &r,
+            &w,
+            WheelsetPose::from_contact(y_ws, yaw, roll),
+            Side::Right,
+        );
+        let opts = PatchOptions {
+            samples: 64,
+            ..PatchOptions::default()
+        };
+        let mut ps = Box::new(Patches::<f64, 4, 256>::new());
+        patches_at_normal_approach(&g, appr, &opts, &mut ps).unwrap();
+        let k = ps.main_index().unwrap();
+        let f = ps.items[k].frame;
+        let pair = isosceles_rigid_pair(&g, &f, f.overlap_s[0], f.overlap_s[1], 50).unwrap();
+        // the patch approach is the continuous minimum of the separation measured along the
+        // patch normal (independent of the 64 samples); the pair's depth is along its own
+        // common normal: they differ by the cosine of the angle between the two normals
+        let tilt = pair.normal_angle - f.angle;
+        let tol = f.approach * (1.0 - tilt.cos()) * 1.5 + 1e-8;
+        assert!(
+            (-pair.separation - f.approach).abs() < tol,
+            "y_ws={y_ws}: depth {} vs approach {} (tilt {tilt})",
+            -pair.separation,
+            f.approach
+        );
+        let mut pa = Box::new(Patches::<f64, 4, 256>::new());
+        let argmin = PatchOptions {
+            reference: ReferenceRule::Argmin,
+            ..opts
+        };
+        contact_patches(&g, f.approach_vertical, &argmin, &mut pa).unwrap();
+        let y_iso = g.rail.at(pair.t_rail).profile.y;
+        assert!(
+            (y_iso - pa.items[k].frame.y_ref_rail).abs() < 0.01,
+            "y_ws={y_ws}: {y_iso}"
+        );
+        assert!((pair.normal_angle - pa.items[k].frame.angle).abs() < 1e-3);
+    }
+}

@@ -1379,3 +1379,239 @@ fn pipeline_wear_overflow_is_typed() {
     );
     assert_eq!(r.err(), Some(Error::NonFinite("wear depth")));
 }
+
+// ---------------------------------------------------------------------------------------------
+// Adaptations on hand-built strip sets, pipeline options full of garbage
+// ---------------------------------------------------------------------------------------------
+
+#[derive(Clone, Debug)]
+struct SetIn {
+    /// per strip: y, dy, a, xc, pmax, n_over_m, a_tilde
+    vals: Vec<[f64; 7]>,
+    n_strips: usize,
+    regions: Vec<(usize, usize, f64, f64, f64)>,
+    n_regions: usize,
+}
+
+fn set_in() -> impl Strategy<Value = SetIn> {
+    let strip = (
+        mostly(-10.0..10.0f64),
+        mostly(0.01..1.0f64),
+        prop_oneof![3 => 0.1..8.0f64, 1 => Just(0.0), 1 => garbage()],
+        mostly(-1.0..1.0f64),
+        mostly(10.0..2000.0f64),
+        mostly(0.1..10.0f64),
+        mostly(1e-4..1.0f64),
+    )
+        .prop_map(|(a, b, c, d, e, f, g)| [a, b, c, d, e, f, g]);
+    (
+        proptest::collection::vec(strip, 24),
+        prop_oneof![4 => 0usize..=24, 1 => 25usize..100, 1 => Just(usize::MAX)],
+        proptest::collection::vec(
+            (
+                prop_oneof![4 => 0usize..24, 1 => 24usize..64, 1 => Just(usize::MAX)],
+                prop_oneof![4 => 0usize..=24, 1 => 25usize..64, 1 => Just(usize::MAX)],
+                mostly(-10.0..0.0f64),
+                mostly(0.0..10.0f64),
+                mostly(1.0..1e5f64),
+            ),
+            3,
+        ),
+        prop_oneof![4 => 0usize..=3, 1 => 4usize..10, 1 => Just(usize::MAX)],
+    )
+        .prop_map(|(vals, n_strips, regions, n_regions)| SetIn {
+            vals,
+            n_strips,
+            regions,
+            n_regions,
+        })
+}
+
+fn build_set(s: &SetIn) -> StripSet<f64, 24, 3> {
+    let mut set = StripSet::<f64, 24, 3>::new();
+    for (j, v) in s.vals.iter().enumerate() {
+        set.y[j] = v[0];
+        set.dy[j] = v[1];
+        set.a[j] = v[2];
+        set.xc[j] = v[3];
+        set.pmax[j] = v[4];
+        set.n_over_m[j] = v[5];
+        set.a_tilde[j] = v[6];
+    }
+    set.n_strips = s.n_strips;
+    set.n_regions = s.n_regions;
+    for (r, &(first, count, lo, hi, load)) in s.regions.iter().enumerate() {
+        set.regions[r].first = first;
+        set.regions[r].count = count;
+        set.regions[r].y_lo = lo;
+        set.regions[r].y_hi = hi;
+        set.regions[r].load = load;
+    }
+    set
+}
+
+proptest! {
+    #![proptest_config(config(256))]
+
+    /// Every adaptation on hand-built (inconsistent, garbage) strip sets: `region_patch` returns a
+    /// typed error or a patch that validates, and both tangential methods on it give finite totals.
+    #[test]
+    fn adaptations_on_garbage_strip_sets(s in set_in(), region in 0usize..5, k in 0u8..7,
+                                         mu in mostly(0.05..0.6f64), xi in creep(), eta in creep()) {
+        let set = build_set(&s);
+        let mat = Material::<f64>::steel();
+        let mut local = [wrc_kernel::adapt::LocalEllipse::default(); 16];
+        let res = wrc_kernel::adapt::region_patch::<f64, 16, 16, 24, 3>(
+            &set, region, &adaptation(k), &mat, &mut local);
+        if let Ok(patch) = res {
+            prop_assert!(patch.validate().is_ok(), "{s:?}: region_patch returned an invalid patch");
+            let cr = Creepage { xi, eta, phi: 1e-4 };
+            for m in [Method::Fastrip, Method::Fastsim] {
+                let bound = adaptation::<f64>(k).default_bound();
+                let mut audit = Audit::new(mu, m == Method::Fastsim);
+                if let Ok(t) = wrc_kernel::adapt::solve_tangential(
+                    &patch, &wrc_kernel::patch::SemiEllipticStrips, &cr, m, bound, mu, &mut audit) {
+                    let tt = t.total;
+                    prop_assert!(tt.fx.is_finite() && tt.fy.is_finite() && tt.mz.is_finite()
+                                 && tt.fn_.is_finite(), "{s:?}: {tt:?}");
+                    prop_assert!(audit.finite);
+                    prop_assert!(audit.worst_bound <= 1e-9, "{s:?}: {}", audit.worst_bound);
+                }
+            }
+        }
+    }
+
+    /// Pipeline options full of garbage: strips per region 0..40, STRIPES options (blend, b_min,
+    /// filter lengths) NaN/negative/huge, an explicit FASTSIM bound with garbage parameters.
+    #[test]
+    fn pipeline_config_garbage(
+        dy in -8.0..8.0f64, spr in 0usize..40, blend in mostly(0.0..1.0f64),
+        bmin in mostly(1e-7..1e-5f64), leps in mostly(0.1..5.0f64), frac in mostly(0.05..1.0f64),
+        hm in 0u8..3, lm in 0u8..3, bk in 0u8..4, bval in garbage(), fastsim in any::<bool>(),
+    ) {
+        let g = GeomIn { dy, yaw: 0.0, roll: 0.0, gauge: 1435.0, b2b: 1360.0, cant: 0.0,
+                         left: false, step: 0.05, dv: 0.03, iso: false, rule: 0, samples: 96 };
+        let patches = geometry_samples(tables64(), &g);
+        prop_assert!(!patches.is_empty());
+        let mut cfg = PipelineConfig::recommended(0.3, 2e4);
+        cfg.strips_per_region = spr;
+        cfg.stripes = StripesConfig {
+            h_mode: match hm { 0 => HMode::Eps0, 1 => HMode::EpsLocal, _ => HMode::EpsSmoothed(leps) },
+            l0_mode: match lm { 0 => L0Mode::Off, 1 => L0Mode::HertzB, _ => L0Mode::PatchFraction(frac) },
+            blend,
+            b_min: bmin,
+        };
+        if fastsim {
+            cfg.method = Method::Fastsim;
+        }
+        cfg.bound = match bk {
+            0 => None,
+            1 => Some(wrc_kernel::patch::TractionBound::Elliptic),
+            2 => Some(wrc_kernel::patch::TractionBound::StripParabolic(bval)),
+            _ => Some(wrc_kernel::patch::TractionBound::Parabolic(wrc_kernel::patch::Ellipse {
+                a: bval, b: 4.0, p0: 1000.0 })),
+        };
+        let cr = Creepage { xi: 1e-3, eta: -5e-4, phi: 2e-4 };
+        let mut ws = Box::new(Ws::<f64>::new());
+        for s in &patches {
+            let mut audit = Audit::new(0.3, fastsim);
+            match solve_patch(s, 8e4, &cr, &Material::steel(), &cfg, &mut ws, &mut audit) {
+                Ok(r) => {
+                    prop_assert!(spr >= 8, "fewer than 8 strips per region accepted: {spr}");
+                    let p = PipeIn { geom: g, load: 8e4, xi: cr.xi, eta: cr.eta, phi: cr.phi,
+                                     mu: 0.3, speed: 2e4, adapt: 0, fastsim };
+                    let elliptic = matches!(cfg.bound, None | Some(wrc_kernel::patch::TractionBound::Elliptic));
+                    check_result(&r, &ws, &audit, &p, !fastsim || elliptic)?;
+                }
+                Err(e) => {
+                    // physical STRIPES options: then the strip count is the first complaint
+                    let stripes_ok = (0.0..1.0).contains(&blend)
+                        && (1e-7..1e-5).contains(&bmin)
+                        && (hm < 2 || (0.1..5.0).contains(&leps))
+                        && (lm < 2 || (0.05..1.0).contains(&frac));
+                    if spr < 8 && stripes_ok {
+                        prop_assert_eq!(e, Error::GridTooSmall("strips per region"));
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// `samples_from_arrays`: more samples than the output holds is a typed error; mismatched input
+/// lengths use the shortest.
+#[test]
+fn samples_from_arrays_capacity() {
+    let v = [1.0f64; 10];
+    let mut out = [StripSample::default(); 4];
+    assert_eq!(
+        samples_from_arrays(|i| i as f64, &v, &v, &v, &v, 10, &mut out).err(),
+        Some(Error::OutOfRange("samples exceed capacity"))
+    );
+    assert_eq!(
+        samples_from_arrays(|i| i as f64, &v[..3], &v, &v, &v, 10, &mut out),
+        Ok(3)
+    );
+}
+
+/// Regression: `region_patch` on a strip set whose public counts exceed its arrays used to index
+/// out of bounds (n_regions = 4 > NR = 3, region 3 → panic at adapt.rs); now typed errors.
+#[test]
+fn region_patch_inconsistent_counts_are_typed() {
+    let mat = Material::<f64>::steel();
+    let mut local = [wrc_kernel::adapt::LocalEllipse::default(); 16];
+    let ad = Adaptation::<f64>::recommended();
+    let mut set = StripSet::<f64, 24, 3>::new();
+    set.n_regions = 4;
+    assert_eq!(
+        wrc_kernel::adapt::region_patch::<f64, 16, 16, 24, 3>(&set, 3, &ad, &mat, &mut local).err(),
+        Some(Error::OutOfRange("region"))
+    );
+    set.n_regions = 1;
+    set.n_strips = 30;
+    assert!(
+        wrc_kernel::adapt::region_patch::<f64, 16, 16, 24, 3>(&set, 0, &ad, &mat, &mut local)
+            .is_err()
+    );
+    set.n_strips = 24;
+    set.regions[0].first = usize::MAX;
+    set.regions[0].count = 8;
+    assert_eq!(
+        wrc_kernel::adapt::region_patch::<f64, 16, 16, 24, 3>(&set, 0, &ad, &mat, &mut local).err(),
+        Some(Error::OutOfRange("strip index"))
+    );
+}
+
+proptest! {
+    #![proptest_config(config(128))]
+
+    /// `Stripes::layout` with a tampered solution (public fields: region count beyond NR, garbage
+    /// region limits) and a sample slice that does not match the solve: typed error or finite
+    /// strips, never an out-of-bounds index.
+    #[test]
+    fn stripes_layout_tampered_solution(
+        nr in prop_oneof![0usize..=2, 3usize..10, Just(usize::MAX)],
+        lo in mostly(-5.0..0.0f64), hi in mostly(0.0..5.0f64), per in 0usize..40,
+        drop_last in any::<bool>(),
+    ) {
+        let s = StripesIn { n: 48, half: 8.0, shape: Shape::Parabola, param: 0.0, ca: 1e-3,
+                            cb: 5e-3, load: 5e4, zs: vec![0.0; 80], bad: vec![], cfg: 0 };
+        let samples = build_samples::<f64>(&s);
+        let mut st = Box::new(Stripes::<f64, 64, 8, 2>::new());
+        let mut sol = st.solve(&samples, 5e4, &Material::steel(), &stripes_cfg::<f64>(0)).unwrap();
+        sol.n_regions = nr;
+        for r in sol.regions.iter_mut() {
+            r.y_lo = lo;
+            r.y_hi = hi;
+        }
+        let used = if drop_last { &samples[..47] } else { &samples[..] };
+        let mut set = Box::new(StripSet::<f64, 32, 2>::new());
+        if st.layout(&sol, used, 5e4, per, &mut set).is_ok() {
+            prop_assert!(set.n_strips <= 32 && set.n_regions <= 2);
+            for j in 0..set.n_strips {
+                prop_assert!(set.y[j].is_finite() && set.a[j].is_finite() && set.pmax[j].is_finite());
+            }
+            prop_assert!(set.total_load.is_finite());
+        }
+    }
+}

@@ -233,12 +233,21 @@ pub fn region_patch<T: Real, const S: usize, const C: usize, const SS: usize, co
     mat: &Material<T>,
     local: &mut [LocalEllipse<T>; S],
 ) -> Result<StripPatch<T, S, C>, Error> {
-    if region >= set.n_regions {
+    // The set's fields are public: counts beyond the arrays (n_regions > NR, n_strips > SS,
+    // first + count overflowing) are typed errors, never an out-of-bounds index.
+    if region >= set.n_regions || region >= NR {
         return Err(Error::OutOfRange("region"));
+    }
+    if set.n_strips > SS {
+        return Err(Error::OutOfRange("strip count exceeds the set's capacity"));
     }
     let reg = set.regions[region];
     if reg.count > S {
         return Err(Error::OutOfRange("strips exceed patch capacity"));
+    }
+    match reg.first.checked_add(reg.count) {
+        Some(end) if end <= set.n_strips => {}
+        _ => return Err(Error::OutOfRange("strip index")),
     }
     let mut strips = [Strip::default(); S];
     let mut xlo = T::MAX;

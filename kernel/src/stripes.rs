@@ -1167,6 +1167,11 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         if nr == 0 || self.n < 2 || samples.len() != self.n {
             return Err(Error::NoContact);
         }
+        // `sol` has public fields: a region count beyond its array is a typed error, not an
+        // out-of-bounds index.
+        if nr > NR {
+            return Err(Error::TooManyRegions);
+        }
         if per_region < MIN_STRIPS_PER_REGION {
             return Err(Error::GridTooSmall("strips per region"));
         }

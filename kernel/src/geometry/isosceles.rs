@@ -171,6 +171,33 @@ impl<T: Real, const N: usize> Ctx<'_, '_, T, N> {
     }
 }
 
+/// Signed separation of the isosceles pair whose midpoint lies at `s` (None if not found).
+pub(crate) fn separation_at<T: Real, const N: usize>(
+    rail: &PlacedRail<'_, T, N>,
+    wheel: &PlacedWheel<'_, T, N>,
+    fr: &FrameS<T>,
+    tr_ref: T,
+    tw_ref: T,
+    s: T,
+) -> Option<T> {
+    let ctx = Ctx { rail, wheel, fr };
+    let rpos = |t: T| {
+        let p = rail.at(t);
+        (p.y, p.z)
+    };
+    let wpos = |t: T| {
+        let p = wheel.at(t);
+        (p.y, p.z)
+    };
+    let tr = super::patch::solve_s(&rpos, fr, rail.table.len, tr_ref, s)?;
+    let tw = super::patch::solve_s(&wpos, fr, wheel.table.len, tw_ref, s)?;
+    let p = ctx.pair_at(tr, tw, s);
+    if math::abs(p.s_mid - s) > math::c::<T>(1e-6) {
+        return None;
+    }
+    Some(p.separation)
+}
+
 /// Fills the samples of `out` (n, s0, ds already set) with isosceles pairs.
 pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
     rail: &PlacedRail<'_, T, N>,

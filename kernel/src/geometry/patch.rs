@@ -154,8 +154,9 @@ pub struct PatchFrame<T> {
     pub weight: T,
     /// Vertical approach δ_v used, mm.
     pub approach_vertical: T,
-    /// Normal approach of this patch at δ_v: the largest interpenetration measured in the
-    /// patch's own samples (= −min separation), mm.
+    /// Normal approach of this patch at δ_v: the largest interpenetration along the patch
+    /// normal (= −min separation of the correspondence, the minimum refined on the continuous
+    /// curves around the deepest sample, so independent of the sample density), mm.
     pub approach: T,
     /// Lateral extent of the overlap in the side frame S (y_S from, to), mm.
     pub overlap_y: [T; 2],
@@ -765,7 +766,7 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
             isosceles::sample_isosceles(&rail, &wheel, &fr, tr_ref, tw_ref, frame.x_ref, out)?;
         }
     }
-    // normalise: min f_n = 0 (parabola-refined), approach = −min separation
+    // normalise: min f_n = 0 (continuous minimum), approach = −min separation
     let mut imin = 0;
     for i in 1..n {
         if out.f_n[i] < out.f_n[imin] {
@@ -773,12 +774,51 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
         }
     }
     let mut fmin = out.f_n[imin];
-    if imin > 0 && imin + 1 < n {
-        let (a, b, c) = (out.f_n[imin - 1], out.f_n[imin], out.f_n[imin + 1]);
-        let den = a - T::TWO * b + c;
-        if den > T::ZERO {
-            let p = math::clamp((a - c) / (T::TWO * den), -T::HALF, T::HALF);
-            fmin = b - (a - c) * p * math::c::<T>(0.25);
+    // refine the minimum of the continuous separation on [s_{i−1}, s_{i+1}] (golden section,
+    // 40 steps), so the approach does not depend on the sample density
+    let lo = out.s(imin.saturating_sub(1));
+    let hi = out.s((imin + 1).min(n - 1));
+    let sep_at = |s: T| -> Option<T> {
+        match corr {
+            Correspondence::Projection => {
+                let tr = solve_s(&rpos, &fr, rail.table.len, tr_ref, s)?;
+                let tw = solve_s(&wpos, &fr, wheel.table.len, tw_ref, s)?;
+                let (rp, wp) = (rpos(tr), wpos(tw));
+                Some(fr.n(wp.0, wp.1) - fr.n(rp.0, rp.1))
+            }
+            Correspondence::Isosceles => {
+                isosceles::separation_at(&rail, &wheel, &fr, tr_ref, tw_ref, s)
+            }
+        }
+    };
+    if hi > lo {
+        let g = math::c::<T>(0.618_033_988_749_894_8);
+        let (mut a, mut b) = (lo, hi);
+        let mut c = b - g * (b - a);
+        let mut d = a + g * (b - a);
+        let (mut fc, mut fd) = (sep_at(c), sep_at(d));
+        for _ in 0..40 {
+            match (fc, fd) {
+                (Some(vc), Some(vd)) => {
+                    if vc < vd {
+                        b = d;
+                        d = c;
+                        fd = fc;
+                        c = b - g * (b - a);
+                        fc = sep_at(c);
+                    } else {
+                        a = c;
+                        c = d;
+                        fc = fd;
+                        d = a + g * (b - a);
+                        fd = sep_at(d);
+                    }
+                }
+                _ => break,
+            }
+        }
+        if let Some(v) = sep_at((a + b) * T::HALF) {
+            fmin = math::min(fmin, v);
         }
     }
     for i in 0..n {
