@@ -19,7 +19,7 @@ const MODELS: [(Tangential, Flex); 6] = [
 
 /// Runs the sweep and prints/writes its outputs.
 pub fn run(a: &SweepArgs) -> Result<(), String> {
-    if !(a.dy_step > 0.0) || a.dy_to < a.dy_from {
+    if a.dy_step.is_nan() || a.dy_step <= 0.0 || a.dy_to < a.dy_from {
         return Err("need --dy-step > 0 and --dy-to >= --dy-from".into());
     }
     let n = ((a.dy_to - a.dy_from) / a.dy_step + 1e-9).floor() as usize + 1;
