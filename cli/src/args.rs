@@ -142,13 +142,15 @@ pub struct WheelRail {
     /// Rail profile (.prr or two-column file).
     #[arg(long)]
     pub rail: Option<PathBuf>,
-    /// Lateral wheelset shift, mm.
+    /// Lateral wheelset shift, mm, positive towards the analysed wheel (its flange approaches the
+    /// gauge face; An et al. 2019).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub dy: f64,
-    /// Yaw angle, mrad.
+    /// Yaw angle, mrad, in the same sense as --dy (CONTACT's yaw for the right wheel, mirrored for
+    /// the left).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub yaw: f64,
-    /// Roll angle, mrad.
+    /// Roll angle about the forward track axis, mrad (positive raises the left wheel).
     #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
     pub roll: f64,
     /// Vertical load on this wheel, N.

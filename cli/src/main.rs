@@ -5,7 +5,9 @@ mod doc;
 mod elliptic;
 mod plot;
 mod sink;
+mod sweep;
 mod timing;
+mod wheelrail;
 
 use args::{Cli, Command, Precision, SolveArgs};
 use clap::Parser;
@@ -55,36 +57,48 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
     }
     let n = c.strips.max(c.cells);
     let keep = a.plot.is_some();
-    let solved = if a.ellipse.is_some() || a.curvatures.is_some() {
-        match c.precision {
+    if a.ellipse.is_some() || a.curvatures.is_some() {
+        let s = match c.precision {
             Precision::F64 => dispatch!(elliptic::solve, f64, n, a, keep),
             Precision::F32 => dispatch!(elliptic::solve, f32, n, a, keep),
-        }?
+        }?;
+        if let Some(dir) = &a.plot {
+            plot::write_all(dir, &s.cells, s.cell_mm.0, s.cell_mm.1, &s.wear_strips)?;
+        }
+        emit(
+            a,
+            &Document::new(inputs_json(a), vec![s.patch], s.status, s.time_us),
+        )
     } else {
-        return Err("a case needs --ellipse/--curvatures (elliptic) or --wheel/--rail".into());
-    };
-    if let Some(dir) = &a.plot {
-        plot::write_all(
-            dir,
-            &solved.cells,
-            solved.cell_mm.0,
-            solved.cell_mm.1,
-            &solved.wear_strips,
-        )?;
+        if ![16, 32, 64].contains(&c.cells) {
+            return Err("--cells must be 16, 32 or 64 for wheel/rail cases".into());
+        }
+        let s = match (c.precision, c.cells) {
+            (Precision::F64, 16) => wheelrail::solve::<f64, 16>(a, keep),
+            (Precision::F64, 32) => wheelrail::solve::<f64, 32>(a, keep),
+            (Precision::F64, _) => wheelrail::solve::<f64, 64>(a, keep),
+            (Precision::F32, 16) => wheelrail::solve::<f32, 16>(a, keep),
+            (Precision::F32, 32) => wheelrail::solve::<f32, 32>(a, keep),
+            (Precision::F32, _) => wheelrail::solve::<f32, 64>(a, keep),
+        }?;
+        if let Some(dir) = &a.plot {
+            plot::write_all(dir, &s.cells, s.cell_mm.0, s.cell_mm.1, &s.wear_strips)?;
+        }
+        emit(
+            a,
+            &Document::new(inputs_json(a), s.patches, s.status, s.time_us),
+        )
     }
-    let doc = Document::new(
-        inputs_json(a),
-        vec![solved.patch],
-        solved.status,
-        solved.time_us,
-    );
+}
+
+fn emit(a: &SolveArgs, doc: &Document) -> Result<(), String> {
     if a.json {
         println!(
             "{}",
-            serde_json::to_string_pretty(&doc).map_err(|e| e.to_string())?
+            serde_json::to_string_pretty(doc).map_err(|e| e.to_string())?
         );
     } else {
-        print_table(&doc);
+        print_table(doc);
     }
     Ok(())
 }
@@ -127,7 +141,7 @@ fn main() {
     let cli = Cli::parse();
     let r = match &cli.command {
         Command::Solve(a) => solve(a),
-        Command::Sweep(_) => Err("wrc sweep is not available in this build".into()),
+        Command::Sweep(a) => sweep::run(a),
     };
     if let Err(e) = r {
         eprintln!("wrc: error: {e}");

@@ -7,6 +7,40 @@
 //! creepages). Output: every contact patch with its frame (reference point, contact angle,
 //! rolling radius), creepages, normal load, STRIPES/tangential results and wear.
 //!
+//! Relation to [`crate::pipeline::solve_wheel`]: that function prescribes the **normal** load of
+//! the main patch and solves only that patch; this one prescribes the **vertical** wheel load,
+//! as a vehicle model knows it, and splits it over every patch.
+//!
+//! ## Example
+//! ```no_run
+//! use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
+//! use wrc_kernel::profile::ProfileTable;
+//! use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
+//! use wrc_kernel::Material;
+//!
+//! fn step(
+//!     rail: &ProfileTable<f32, 2048>,
+//!     wheel: &ProfileTable<f32, 2048>,
+//!     ws: &mut DefaultWheelWorkspace<f32>,
+//!     dy_mm: f32,
+//!     yaw_rad: f32,
+//!     fz_n: f32,
+//! ) -> Result<(f32, f32), wrc_kernel::Error> {
+//!     let pose = WheelsetPose { dy: dy_mm, yaw: yaw_rad, roll: 0.0 };
+//!     let geom = WheelRail::<f32, 2048, 2048>::place(
+//!         rail, wheel, &TrackSetup::standard(), &pose, Side::Right, 0.05)?;
+//!     let mat = Material::<f32>::steel();
+//!     let cfg = WheelConfig::recommended(0.3, 55_555.6, 460.0);
+//!     let res = solve_wheel(&geom, fz_n, &mat, &cfg, ws, &mut ())?;
+//!     let (mut fx, mut fy) = (0.0, 0.0);
+//!     for p in res.patches[..res.n].iter().flatten() {
+//!         fx += p.result.totals.fx;
+//!         fy += p.result.totals.fy;
+//!     }
+//!     Ok((fx, fy))
+//! }
+//! ```
+//!
 //! ## Load split (methods.md §6 item 8, §7.2)
 //! All patches share the wheel's rigid vertical displacement δ_v. At a given δ_v the geometry
 //! gives each patch its frame and its own normal approach a_k (the interpenetration of its samples,

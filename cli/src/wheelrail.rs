@@ -1,0 +1,259 @@
+//! Wheel/rail cases: `wrc solve --wheel FILE --rail FILE --dy … --fz …` through the kernel's
+//! per-wheel solve (`wrc_kernel::wheel`): geometry, load split over the patches, STRIPES, the
+//! chosen adaptation and tangential model, KTH wear.
+
+use crate::args::{Flex, Normal, Side as ArgSide, SolveArgs, Tangential};
+use crate::doc::{Creepage as DocCreepage, Patch, Status};
+use crate::sink::PlotCell;
+use crate::timing::median_time_us;
+use std::path::{Path, PathBuf};
+use wrc_host_tests::profiles::{build_table, SmoothOptions};
+use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
+use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
+use wrc_kernel::patch::{CellOut, CellSink, Creepage};
+use wrc_kernel::profile::{ProfileKind, ProfileTable};
+use wrc_kernel::wheel::{solve_wheel, WheelConfig, WheelSink, WheelWorkspace};
+use wrc_kernel::{Material, Real};
+
+/// Profile capacity (nodes) of the command line.
+const NODES: usize = 2048;
+
+/// Everything a solved wheel/rail case reports.
+pub struct Solved {
+    /// Patches for the JSON document.
+    pub patches: Vec<Patch>,
+    /// Cells of the first patch for plots (empty unless requested).
+    pub cells: Vec<PlotCell>,
+    /// Status.
+    pub status: Status,
+    /// Kernel time, µs (wheel solve with the wheel already placed).
+    pub time_us: f64,
+    /// Cell size (x, y) of the first patch's first region, mm.
+    pub cell_mm: (f64, f64),
+    /// (y, wear µm) per strip of the first patch.
+    pub wear_strips: Vec<(f64, f64)>,
+}
+
+/// Default profile paths: the shipped Manchester S1002 / UIC60 pair.
+pub fn default_profiles() -> (PathBuf, PathBuf) {
+    (
+        wrc_host_tests::data::shared_file("profiles/MBench_S1002_v3.prw"),
+        wrc_host_tests::data::shared_file("profiles/MBench_UIC60_v3.prr"),
+    )
+}
+
+fn table<T: Real>(path: &Path, kind: ProfileKind) -> Result<Box<ProfileTable<T, NODES>>, String> {
+    build_table::<T, NODES>(path, Some(kind), &SmoothOptions::default())
+        .map_err(|e| format!("{}: {e}", path.display()))
+}
+
+/// Per-patch statistics from the cells.
+struct Stats {
+    patch: usize,
+    keep: bool,
+    speed: f64,
+    per: Vec<PatchStats>,
+    cells: Vec<PlotCell>,
+}
+
+#[derive(Clone, Default)]
+struct PatchStats {
+    area: f64,
+    stick: f64,
+    x: [f64; 2],
+    y: [f64; 2],
+    dx: f64,
+}
+
+impl<T: Real> CellSink<T> for Stats {
+    fn cell(&mut self, _j: usize, _i: usize, o: &CellOut<T>) {
+        while self.per.len() <= self.patch {
+            self.per.push(PatchStats {
+                x: [f64::MAX, f64::MIN],
+                y: [f64::MAX, f64::MIN],
+                ..Default::default()
+            });
+        }
+        let p = &mut self.per[self.patch];
+        let a = o.area.to_f64();
+        p.area += a;
+        if !o.slip {
+            p.stick += a;
+        }
+        let (x, y) = (o.x.to_f64(), o.y.to_f64());
+        if p.dx == 0.0 {
+            p.dx = a; // area of the first cell, turned into δy below
+        }
+        p.x = [p.x[0].min(x), p.x[1].max(x)];
+        p.y = [p.y[0].min(y), p.y[1].max(y)];
+        if self.keep && self.patch == 0 {
+            let s = o.sx.to_f64().hypot(o.sy.to_f64());
+            self.cells.push(PlotCell {
+                x,
+                y,
+                pn: o.pn.to_f64(),
+                px: o.px.to_f64(),
+                py: o.py.to_f64(),
+                slip: o.slip,
+                vs: s * self.speed * 1e-3,
+                wear_um: 0.0,
+            });
+        }
+    }
+}
+
+impl<T: Real> WheelSink<T> for Stats {
+    fn begin_patch(&mut self, k: usize) {
+        self.patch = k;
+    }
+}
+
+/// Solves a wheel/rail case in precision `T` with `C` cells per strip.
+pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+    let cm = &args.common;
+    let wr = &args.wr;
+    let t = T::from_f64;
+    match cm.normal.unwrap_or(Normal::Stripes) {
+        Normal::Stripes => {}
+        other => {
+            return Err(format!(
+            "--normal {other:?} is not available for wheel/rail cases in this build (stripes is)"
+        ))
+        }
+    }
+    if cm.strips < 8 || cm.strips > 32 {
+        return Err("--strips per region must be within 8..=32 for wheel/rail cases".into());
+    }
+    let (dw, dr) = default_profiles();
+    let wheel = table::<T>(wr.wheel.as_deref().unwrap_or(&dw), ProfileKind::Wheel)?;
+    let rail = table::<T>(wr.rail.as_deref().unwrap_or(&dr), ProfileKind::Rail)?;
+    let mut setup = TrackSetup::<T>::standard();
+    setup.gauge = t(wr.gauge);
+    setup.gauge_depth = t(wr.gauge_depth);
+    setup.back_to_back = t(wr.back_to_back.unwrap_or(1360.0));
+    setup.cant = t(wr.cant);
+    setup.r0 = t(wr.r0);
+    // --dy and --yaw are taken towards the analysed wheel (An et al. 2019, methods.md §7.1):
+    // CONTACT's y_ws (to the right) for the right wheel, mirrored for the left wheel.
+    let (side, mirror) = match wr.side {
+        ArgSide::Left => (Side::Left, -1.0),
+        ArgSide::Right => (Side::Right, 1.0),
+    };
+    let pose = WheelsetPose::from_contact(
+        t(mirror * wr.dy),
+        t(mirror * wr.yaw * 1e-3),
+        t(wr.roll * 1e-3),
+    );
+    let geom = WheelRail::<T, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, t(0.05))
+        .map_err(|e| format!("geometry: {e}"))?;
+    let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
+    let speed = cm.speed * 1e3;
+    let mut cfg = WheelConfig::recommended(t(cm.mu), t(speed), t(wr.r0));
+    cfg.pipeline.strips_per_region = cm.strips;
+    cfg.pipeline.method = match cm.tangential {
+        Tangential::Fastsim => Method::Fastsim,
+        Tangential::Fastrip => Method::Fastrip,
+        Tangential::Exact => {
+            return Err(
+                "--tangential exact is not available for wheel/rail cases in this build".into(),
+            )
+        }
+    };
+    cfg.pipeline.adapt = match cm.flex.unwrap_or(Flex::Ac) {
+        Flex::Hertz => Adaptation::Hertz,
+        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
+        Flex::Linder => Adaptation::Linder,
+        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
+    };
+    cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
+        (None, None, None) => None,
+        (Some(xi), Some(eta), Some(phi)) => Some(Creepage {
+            xi: t(xi),
+            eta: t(eta),
+            phi: t(phi),
+        }),
+        _ => return Err("give all of --xi, --eta, --phi or none (kinematic creepages)".into()),
+    };
+    let mut ws = Box::new(WheelWorkspace::<T, 4, 128, 256, 4, 32, C, 128>::new());
+    let fz = t(wr.fz);
+    let time_us = median_time_us(|| {
+        let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
+    });
+    let mut stats = Stats {
+        patch: 0,
+        keep,
+        speed,
+        per: vec![],
+        cells: vec![],
+    };
+    let res = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut stats).map_err(|e| e.to_string())?;
+    let mut patches = vec![];
+    for (k, p) in res.patches[..res.n].iter().flatten().enumerate() {
+        let st = stats.per.get(k).cloned().unwrap_or_default();
+        let r = &p.result;
+        let mut wear = 0.0f64;
+        for reg in r.regions[..r.n_regions].iter() {
+            wear = wear.max(reg.wear_max.to_f64());
+        }
+        patches.push(Patch {
+            y_ref_mm: p.frame.y_ref_rail.to_f64(),
+            z_ref_mm: p.frame.z_ref_rail.to_f64(),
+            contact_angle_rad: p.frame.angle.to_f64(),
+            creepage: DocCreepage {
+                xi: p.creepage.xi.to_f64(),
+                eta: p.creepage.eta.to_f64(),
+                phi_per_mm: p.creepage.phi.to_f64(),
+            },
+            approach_mm: r.approach.to_f64(),
+            fn_n: p.load.to_f64(),
+            fx_n: r.totals.fx.to_f64(),
+            fy_n: r.totals.fy.to_f64(),
+            mz_nmm: r.totals.mz.to_f64(),
+            pmax_mpa: r.pmax.to_f64(),
+            area_mm2: r.area.to_f64(),
+            x_extent_mm: if st.area > 0.0 { st.x } else { [0.0, 0.0] },
+            y_extent_mm: if st.area > 0.0 { st.y } else { [0.0, 0.0] },
+            stick_area_fraction: if st.area > 0.0 {
+                st.stick / st.area
+            } else {
+                0.0
+            },
+            wear_depth_max_um: wear * 1e3,
+        });
+    }
+    // plots: first patch; strip wear from the pipeline workspace belongs to the last patch solved,
+    // so it is reported only for single-patch cases
+    let wear_strips = if res.n == 1 {
+        let set = &ws.pipeline.set;
+        (0..set.n_strips)
+            .map(|j| (set.y[j].to_f64(), ws.pipeline.wear.depth[j].to_f64() * 1e3))
+            .collect()
+    } else {
+        vec![]
+    };
+    let cell_mm = stats
+        .per
+        .first()
+        .map(|p| {
+            let (x0, x1) = (p.x[0], p.x[1]);
+            let dx = ((x1 - x0) / (C as f64 - 1.0)).max(1e-6);
+            (dx, p.dx / dx)
+        })
+        .unwrap_or((0.1, 0.1));
+    let mut warnings = vec![];
+    if !res.converged {
+        warnings.push("the load or frame iteration did not reach its tolerance".to_string());
+    }
+    Ok(Solved {
+        patches,
+        cells: stats.cells,
+        status: Status {
+            converged: res.converged,
+            iterations: res.iterations,
+            warnings,
+        },
+        time_us,
+        cell_mm,
+        wear_strips,
+    })
+}

@@ -1,0 +1,104 @@
+//! The `wrc` command line against its contract (shared/docs/cli.md): JSON fields, values that tie
+//! back to the kernel's validated results, and one-line errors with a non-zero exit.
+
+use std::process::Command;
+
+fn wrc(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_wrc"))
+        .args(args)
+        .output()
+        .expect("wrc runs")
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let o = wrc(args);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    serde_json::from_slice(&o.stdout).expect("stdout is one JSON document")
+}
+
+#[test]
+fn elliptic_case_reports_hertz_and_fastrip() {
+    // CONTACT's 8 × 4 mm example with G = 82 000 MPa (E = 2G(1+ν)): approach 0.092669 mm,
+    // p0 = 1223.50 MPa (methods.md §10.1).
+    let d = json(&[
+        "solve",
+        "--ellipse",
+        "8,4",
+        "--fn",
+        "82000",
+        "--e-mpa",
+        "209920",
+        "--eta",
+        "-6.25e-4",
+        "--phi",
+        "6.25e-4",
+        "--json",
+    ]);
+    let p = &d["patches"][0];
+    assert!((p["approach_mm"].as_f64().unwrap() - 0.092669).abs() < 2e-6);
+    assert!((p["pmax_mpa"].as_f64().unwrap() - 1223.50).abs() < 0.01);
+    // FaStrip on the exact ellipse: F_y/(μN) near CONTACT's exact −0.6074 (within 2 % of μN).
+    let fy = p["fy_n"].as_f64().unwrap() / (0.3 * 82_000.0);
+    assert!((fy + 0.6074).abs() < 0.02, "Fy/(mu N) = {fy}");
+    assert_eq!(d["total"]["fn_n"], p["fn_n"]);
+    for k in [
+        "y_ref_mm",
+        "z_ref_mm",
+        "contact_angle_rad",
+        "creepage",
+        "approach_mm",
+        "fn_n",
+        "fx_n",
+        "fy_n",
+        "mz_nmm",
+        "pmax_mpa",
+        "area_mm2",
+        "x_extent_mm",
+        "y_extent_mm",
+        "stick_area_fraction",
+        "wear_depth_max_um",
+    ] {
+        assert!(!p[k].is_null(), "missing {k}");
+    }
+    assert_eq!(d["status"]["converged"], true);
+    assert!(d["time_us"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn wheel_rail_case_carries_the_load() {
+    let d = json(&[
+        "solve",
+        "--dy",
+        "2",
+        "--yaw",
+        "2.4",
+        "--fz",
+        "83300",
+        "--back-to-back",
+        "1353",
+        "--json",
+    ]);
+    let patches = d["patches"].as_array().unwrap();
+    assert!(!patches.is_empty());
+    // vertical balance: Σ (N cos δ ± F_y sin δ) = F_z, so Σ N is within a few % of F_z on the tread
+    let fn_ = d["total"]["fn_n"].as_f64().unwrap();
+    assert!((fn_ / 83_300.0 - 1.0).abs() < 0.02, "Fn = {fn_}");
+    let p = &patches[0];
+    let ft = p["fx_n"]
+        .as_f64()
+        .unwrap()
+        .hypot(p["fy_n"].as_f64().unwrap());
+    assert!(ft <= 0.3 * p["fn_n"].as_f64().unwrap() * 1.001);
+    assert_eq!(d["status"]["converged"], true);
+}
+
+#[test]
+fn unsolvable_case_fails_with_one_line() {
+    let o = wrc(&["solve", "--dy=-99", "--fz", "10000"]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(e.trim().lines().count(), 1, "{e}");
+    assert!(e.contains("no contact"), "{e}");
+    let o = wrc(&["solve", "--ellipse", "8,4", "--fn=-1"]);
+    assert!(!o.status.success());
+}
