@@ -98,10 +98,11 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
     let t = T::from_f64;
     match cm.normal.unwrap_or(Normal::Hertz) {
         Normal::Hertz => {}
-        other => {
-            return Err(format!(
-                "--normal {other:?} is not available for elliptic cases in this build"
-            ))
+        Normal::Norm => return solve_norm::<T, S, C>(args, keep_cells),
+        Normal::Stripes => {
+            return Err(
+                "--normal stripes needs a wheel/rail gap; elliptic cases use hertz or norm".into(),
+            )
         }
     }
     match cm.flex.unwrap_or(Flex::Hertz) {
@@ -197,6 +198,157 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
         },
         time_us,
         cell_mm,
+        wear_strips,
+    })
+}
+
+/// `--normal norm`: Kalker's boundary-element NORM (host reference, `wrc_host_tests::norm`) on the
+/// gap A x² + B y² over CONTACT's ±1.1a × ±1.1b grid of `--cells` × `--strips` elements, then the
+/// kernel's FASTSIM/FaStrip on the NORM pressure (bound μ p_n, Kalker flexibilities of the Hertz
+/// ellipse; each grid row is a strip with its contact run).
+fn solve_norm<T: Real, const S: usize, const C: usize>(
+    args: &SolveArgs,
+    keep_cells: bool,
+) -> Result<Solved, String> {
+    use wrc_host_tests::norm::{Control, Grid, Norm, Options};
+    use wrc_kernel::patch::CellPressure;
+    let cm = &args.common;
+    let t = T::from_f64;
+    let (ns, nc) = (cm.strips, cm.cells);
+    if ns > S || nc > C || ns < 4 || nc < 4 {
+        return Err(format!("grid {ns} x {nc} outside 4..={S} x 4..={C}"));
+    }
+    let mat64 = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(|e| e.to_string())?;
+    let h = hertz_of::<f64>(args, &mat64)?;
+    let (ca, cb) = (h.curv_a, h.curv_b);
+    let control = if args.approach.is_some() {
+        Control::Penetration(h.delta)
+    } else {
+        Control::Load(h.load)
+    };
+    let mut sol = None;
+    let time_us = median_time_us(|| {
+        let r = Grid::new(
+            nc,
+            ns,
+            2.2 * h.a / nc as f64,
+            2.2 * h.b / ns as f64,
+            -1.1 * h.a,
+            -1.1 * h.b,
+        )
+        .and_then(|g| {
+            let gap = g.sample(|x, y| ca * x * x + cb * y * y);
+            Norm::new(g, mat64)?.solve(&gap, control, &Options::default())
+        });
+        sol = Some(r);
+    });
+    let sol = sol
+        .ok_or("NORM did not run")?
+        .map_err(|e| format!("NORM: {e}"))?;
+    let g = sol.grid;
+    // kernel strips from the NORM rows
+    let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
+    let template = Strip::default()
+        .with_reference(t(h.a), t(h.b), &mat)
+        .map_err(|e| e.to_string())?;
+    let mut strips = [template; S];
+    let mut pn = [[T::ZERO; C]; S];
+    for (j, s) in strips.iter_mut().enumerate() {
+        s.y = t(g.y0 + (j as f64 + 0.5) * g.dy);
+        s.dy = t(g.dy);
+        s.a = T::ZERO;
+        s.p_hat = T::ONE;
+        if j >= g.my {
+            continue;
+        }
+        let st = &sol.strips[j];
+        if let Some(run) = st.runs.first() {
+            if st.runs.len() > 1 {
+                return Err("NORM row with several contact runs: not an elliptic patch".into());
+            }
+            let a = 0.5 * (run.x_lead - run.x_trail);
+            s.a = t(a);
+            s.xc = t(0.5 * (run.x_lead + run.x_trail));
+            s.p_hat = t(2.0 * run.force_per_width / (std::f64::consts::PI * a));
+        }
+        for (i, v) in pn[j].iter_mut().enumerate().take(g.mx) {
+            *v = t(sol.p(i, j));
+        }
+    }
+    let patch =
+        StripPatch::<T, S, C>::new(strips, t(g.x0), t(g.dx), mat).map_err(|e| e.to_string())?;
+    let cr = Creepage {
+        xi: t(cm.xi.unwrap_or(0.0)),
+        eta: t(cm.eta.unwrap_or(0.0)),
+        phi: t(cm.phi.unwrap_or(0.0)),
+    };
+    let mu = t(cm.mu);
+    let mut sink = StatsSink::<T, S>::new(WearMap::kth(), t(cm.speed * 1e3), patch.dx, keep_cells);
+    let pressure = CellPressure(&pn);
+    let res = match cm.tangential {
+        Tangential::Fastsim => fastsim(
+            &patch,
+            &pressure,
+            &cr,
+            &FastsimSettings::canonical(mu, TractionBound::Elliptic),
+            &mut sink,
+        ),
+        Tangential::Fastrip => {
+            fastrip(&patch, &pressure, &cr, &FastripSettings::new(mu), &mut sink)
+        }
+        Tangential::Exact => return Err("--tangential exact is not available in this build".into()),
+    }
+    .map_err(|e| e.to_string())?;
+    let wear_strips: Vec<(f64, f64)> = patch
+        .strips
+        .iter()
+        .zip(sink.wear.depth.iter())
+        .filter(|(s, _)| s.a > T::ZERO)
+        .map(|(s, d)| (s.y.to_f64(), d.to_f64() * 1e3))
+        .collect();
+    let (ex, ey) = (
+        sol.extent_x.unwrap_or((0.0, 0.0)),
+        sol.extent_y.unwrap_or((0.0, 0.0)),
+    );
+    let patch_doc = Patch {
+        y_ref_mm: 0.0,
+        z_ref_mm: 0.0,
+        contact_angle_rad: 0.0,
+        creepage: DocCreepage {
+            xi: cr.xi.to_f64(),
+            eta: cr.eta.to_f64(),
+            phi_per_mm: cr.phi.to_f64(),
+        },
+        approach_mm: sol.approach,
+        fn_n: sol.force,
+        fx_n: res.total.fx.to_f64(),
+        fy_n: res.total.fy.to_f64(),
+        mz_nmm: res.total.mz.to_f64(),
+        pmax_mpa: sol.p_max,
+        area_mm2: sol.area,
+        x_extent_mm: [ex.0, ex.1],
+        y_extent_mm: [ey.0, ey.1],
+        stick_area_fraction: if sink.area > 0.0 {
+            sink.stick_area / sink.area
+        } else {
+            0.0
+        },
+        wear_depth_max_um: sink.wear.max_depth(S).to_f64() * 1e3,
+    };
+    let mut warnings = vec![];
+    if sol.touches_boundary {
+        warnings.push("NORM contact reaches the grid boundary".to_string());
+    }
+    Ok(Solved {
+        patch: patch_doc,
+        cells: sink.cells,
+        status: Status {
+            converged: sol.converged,
+            iterations: sol.iterations as u32,
+            warnings,
+        },
+        time_us,
+        cell_mm: (g.dx, g.dy),
         wear_strips,
     })
 }

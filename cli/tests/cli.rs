@@ -102,3 +102,38 @@ fn unsolvable_case_fails_with_one_line() {
     let o = wrc(&["solve", "--ellipse", "8,4", "--fn=-1"]);
     assert!(!o.status.success());
 }
+
+#[test]
+fn elliptic_case_with_norm_reproduces_the_spec_table() {
+    // methods.md §9.1, 44 × 44 elements over ±1.1a × ±1.1b: δ 0.09266, max element p 1222.8,
+    // element-count area 102.08 (CONTACT prints 9.266e-2 and 1223 for the same case).
+    let d = json(&[
+        "solve",
+        "--ellipse",
+        "8,4",
+        "--fn",
+        "82000",
+        "--e-mpa",
+        "209920",
+        "--eta",
+        "-6.25e-4",
+        "--phi",
+        "6.25e-4",
+        "--normal",
+        "norm",
+        "--strips",
+        "44",
+        "--cells",
+        "44",
+        "--json",
+    ]);
+    let p = &d["patches"][0];
+    assert!((p["approach_mm"].as_f64().unwrap() - 0.09266).abs() < 1e-5);
+    assert!((p["pmax_mpa"].as_f64().unwrap() - 1222.8).abs() < 0.1);
+    assert!((p["area_mm2"].as_f64().unwrap() - 102.08).abs() < 0.01);
+    assert!((p["fn_n"].as_f64().unwrap() - 82_000.0).abs() < 1e-3);
+    // FaStrip on NORM pressure against CONTACT's exact F_y/(μN) = −0.6074: within 1 % of μN
+    let fy = p["fy_n"].as_f64().unwrap() / (0.3 * 82_000.0);
+    assert!((fy + 0.6074).abs() < 0.01, "Fy/(mu N) = {fy}");
+    assert_eq!(d["status"]["converged"], true);
+}
