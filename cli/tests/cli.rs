@@ -132,8 +132,10 @@ fn elliptic_case_with_norm_reproduces_the_spec_table() {
     assert!((p["pmax_mpa"].as_f64().unwrap() - 1222.8).abs() < 0.1);
     assert!((p["area_mm2"].as_f64().unwrap() - 102.08).abs() < 0.01);
     assert!((p["fn_n"].as_f64().unwrap() - 82_000.0).abs() < 1e-3);
-    // FaStrip on NORM pressure against CONTACT's exact F_y/(μN) = −0.6074: within 1 % of μN
+    // FaStrip on NORM pressure against the grid-converged exact F_y/(μN) = −0.6266 (TANG,
+    // Richardson 20/40 elements per semi-axis; CONTACT's 44² exact −0.6074 is a coarse-grid value,
+    // TANG gives −0.5956 at 44²): within 1 % of μN.
     let fy = p["fy_n"].as_f64().unwrap() / (0.3 * 82_000.0);
-    assert!((fy + 0.6074).abs() < 0.01, "Fy/(mu N) = {fy}");
+    assert!((fy + 0.6266).abs() < 0.01, "Fy/(mu N) = {fy}");
     assert_eq!(d["status"]["converged"], true);
 }
