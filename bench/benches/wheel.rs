@@ -126,7 +126,7 @@ fn bench(c: &mut Criterion) {
         t_solve.push(time(reps, || {
             solve_wheel(&g, FZ, &mat, &cfg, &mut ws, &mut ()).expect("wheel")
         }));
-        passes.push(res.iterations as f64);
+        passes.push(res.geometry_calls as f64);
         solves.push(res.stripes_solves as f64);
         rounds.push(res.coupling_rounds as f64);
         npatch.push(res.n as f64);
@@ -242,7 +242,7 @@ fn bench(c: &mut Criterion) {
         us(&mut t_wear)
     );
     println!(
-        "counts per call (median / max): geometry passes {} / {}; STRIPES solves of the load split {} / {}; \
+        "counts per call (median / max): contact_patches calls {} / {}; STRIPES solves of the load split {} / {}; \
          coupling rounds {} / {}; patches {} / {}",
         median(&mut passes.clone()),
         mx(&passes),

@@ -25,9 +25,9 @@ fn main() {
                 .expect("placement");
             let res = solve_wheel(&g, 83_300.0, &mat, &cfg, &mut ws, &mut ()).expect("wheel");
             for p in res.patches[..res.n].iter().flatten() {
-                sum += p.result.totals.fy;
+                sum += p.result.totals.fy.abs() + p.result.pmax;
             }
         }
     }
-    println!("Σ Fy = {sum:.6}");
+    println!("Σ (|Fy| + pmax) = {sum:.9}");
 }

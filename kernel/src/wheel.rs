@@ -141,8 +141,12 @@ pub struct WheelResult<T, const K: usize, const NR: usize> {
     pub vertical_approach: T,
     /// Σ N_k cos δ_k reached, N.
     pub vertical_load: T,
-    /// Geometry passes used ([`contact_patches`] calls, over all coupling rounds).
+    /// Passes of the load loop, over all coupling rounds.
     pub iterations: u32,
+    /// [`contact_patches`] evaluations (≤ `iterations`: a pass at the vertical approach of the
+    /// previous pass — the first pass of every coupling round and of the final split — reuses
+    /// its patches).
+    pub geometry_calls: u32,
     /// Normal–tangential coupling rounds used (≤ [`MAX_COUPLING`]).
     pub coupling_rounds: u32,
     /// STRIPES load-control solves of the load split (inverse load control, all passes).
@@ -181,6 +185,9 @@ pub struct WheelWorkspace<
     loads: [T; K],
     ratio: [T; K],
     solves: u32,
+    geometry_calls: u32,
+    /// δ_v of the patches in `patches` (valid within one `solve_wheel` call only).
+    patches_dv: Option<T>,
 }
 
 /// The default wheel workspace: 4 patches of 128 samples, the default pipeline workspace.
@@ -206,6 +213,8 @@ impl<
             loads: [T::ZERO; K],
             ratio: [T::ZERO; K],
             solves: 0,
+            geometry_calls: 0,
+            patches_dv: None,
         }
     }
 }
@@ -351,7 +360,13 @@ fn split_load<
     let (mut dv0, mut f0) = (T::ZERO, T::ZERO);
     let mut fsum = T::ZERO;
     for pass in 0..MAX_OUTER {
-        contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+        // the patches depend only on (geom, δ_v, options), fixed within one call
+        if ws.patches_dv != Some(dv) {
+            ws.patches_dv = None;
+            contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+            ws.patches_dv = Some(dv);
+            ws.geometry_calls += 1;
+        }
         fsum = T::ZERO;
         let mut inner_ok = true;
         let np = ws.patches.len.min(K);
@@ -433,6 +448,8 @@ pub fn solve_wheel<
     ws.ratio = [T::ZERO; K];
     ws.loads = [T::ZERO; K];
     ws.solves = 0;
+    ws.geometry_calls = 0;
+    ws.patches_dv = None;
     let mut dv = math::c::<T>(0.05);
     let mut passes = 0;
     let mut ok = false;
@@ -486,6 +503,7 @@ pub fn solve_wheel<
         vertical_approach: dv,
         vertical_load: vload,
         iterations: passes,
+        geometry_calls: ws.geometry_calls,
         coupling_rounds: rounds,
         stripes_solves: ws.solves,
         converged: ok && coupled,
