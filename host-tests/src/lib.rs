@@ -12,3 +12,4 @@ pub mod profiles;
 pub mod table;
 pub mod tang;
 pub mod wear_ref;
+pub mod wheelrail;

@@ -13,57 +13,15 @@
 //! are then predicted, normalised by V_ref = (V + ΩR)/2 as CONTACT does (§7.4). Signs converted
 //! by §0.2: ξ_K = −ξ_C, η_K = η_C, φ_K = φ_C.
 
-use wrc_host_tests::data::shared_file;
 use wrc_host_tests::profiles::{self, SmoothOptions};
+use wrc_host_tests::wheelrail::{mbench_rows, MbenchRow as Row};
 use wrc_kernel::geometry::*;
 use wrc_kernel::profile::ProfileTable;
 
 type Table = ProfileTable<f64, 2048>;
 
-#[derive(Debug, Clone)]
-struct Row {
-    side: Side,
-    y_ws: f64,
-    yaw: f64,
-    roll: f64,
-    ycp_r: f64,
-    delta: f64,
-    cksi: f64,
-    ceta: f64,
-    cphi: f64,
-    approach: f64,
-    zcp_w: f64,
-}
-
 fn rows() -> Vec<Row> {
-    let text =
-        std::fs::read_to_string(shared_file("contact_reference/mbench_a22_exact.csv")).unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let g = |n: &str| f[col(n)].parse::<f64>().unwrap();
-            Row {
-                side: if f[col("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_ws: g("y_ws"),
-                yaw: g("yaw_ws"),
-                roll: g("roll_ws"),
-                ycp_r: g("ycp_r"),
-                delta: g("deltcp_tr"),
-                cksi: g("cksi"),
-                ceta: g("ceta"),
-                cphi: g("cphi"),
-                approach: g("approach"),
-                zcp_w: g("zcp_w"),
-            }
-        })
-        .collect()
+    mbench_rows().expect("mbench_a22_exact.csv")
 }
 
 struct Case {

@@ -18,49 +18,14 @@
 //!
 //! `cargo test -p wrc-host-tests --release --test norm_mbench -- --nocapture` prints the table.
 
-use wrc_host_tests::data::shared_file;
 use wrc_host_tests::norm::{solve, Control, Grid, Options};
 use wrc_host_tests::profiles::{self, SmoothOptions};
+use wrc_host_tests::wheelrail::{mbench_rows, MbenchRow as Row};
 use wrc_kernel::geometry::*;
 use wrc_kernel::Material;
 
-struct Row {
-    side: Side,
-    y_ws: f64,
-    yaw: f64,
-    roll: f64,
-    approach: f64,
-    fn_: f64,
-    pmax: f64,
-    area: f64,
-}
-
 fn rows() -> Vec<Row> {
-    let text =
-        std::fs::read_to_string(shared_file("contact_reference/mbench_a22_exact.csv")).unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let g = |n: &str| f[col(n)].parse::<f64>().unwrap();
-            Row {
-                side: if f[col("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_ws: g("y_ws"),
-                yaw: g("yaw_ws"),
-                roll: g("roll_ws"),
-                approach: g("approach"),
-                fn_: g("FN"),
-                pmax: g("pmax"),
-                area: 0.04 * g("ncon"),
-            }
-        })
-        .collect()
+    mbench_rows().expect("mbench_a22_exact.csv")
 }
 
 /// Lateral samples of the main patch: (s, f_n, A, x_c).
@@ -141,12 +106,12 @@ fn norm_against_contact_mbench() {
         let e = [
             s.approach / row.approach - 1.0,
             s.p_max / row.pmax - 1.0,
-            s.area / row.area - 1.0,
+            s.area / row.area() - 1.0,
         ];
         println!(
             "| {:?} | {} | {:.5} / {:.5} ({:+.2} %) | {:.1} / {:.1} ({:+.2} %) | {:.2} / {:.2} ({:+.2} %) | {} |",
             row.side, row.y_ws, s.approach, row.approach, 100.0 * e[0], s.p_max, row.pmax,
-            100.0 * e[1], s.area, row.area, 100.0 * e[2], s.iterations
+            100.0 * e[1], s.area, row.area(), 100.0 * e[2], s.iterations
         );
         for (wk, ek) in worst.iter_mut().zip(e) {
             *wk = wk.max(ek.abs());

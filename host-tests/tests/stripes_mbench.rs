@@ -12,8 +12,8 @@
 //! defaults. The table is written to `out/stripes_mbench.txt` (repository root) and printed.
 
 use std::fmt::Write as _;
-use wrc_host_tests::data::shared_file;
 use wrc_host_tests::profiles::{self, SmoothOptions};
+use wrc_host_tests::wheelrail::{mbench_rows, MbenchRow as Row};
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::geometry::*;
 use wrc_kernel::patch::Creepage;
@@ -21,57 +21,8 @@ use wrc_kernel::pipeline::{samples_from_arrays, solve_patch, DefaultWorkspace, P
 use wrc_kernel::stripes::{HMode, L0Mode, StripSample, StripesConfig};
 use wrc_kernel::{Material, Real};
 
-#[derive(Clone, Debug)]
-struct Row {
-    side: Side,
-    y_ws: f64,
-    yaw: f64,
-    roll: f64,
-    approach: f64,
-    fn_: f64,
-    fx: f64,
-    fs: f64,
-    mn: f64,
-    pmax: f64,
-    area: f64,
-    cr: Creepage<f64>,
-}
-
 fn rows() -> Vec<Row> {
-    let text =
-        std::fs::read_to_string(shared_file("contact_reference/mbench_a22_exact.csv")).unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let g = |n: &str| f[col(n)].parse::<f64>().unwrap();
-            Row {
-                side: if f[col("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_ws: g("y_ws"),
-                yaw: g("yaw_ws"),
-                roll: g("roll_ws"),
-                approach: g("approach"),
-                fn_: g("FN"),
-                // forces on the rail (CONTACT) → on the wheel (§0.2)
-                fx: -g("FX"),
-                fs: g("FS"),
-                mn: g("MN"),
-                pmax: g("pmax"),
-                area: 0.04 * g("ncon"),
-                cr: Creepage {
-                    xi: -g("cksi"),
-                    eta: g("ceta"),
-                    phi: g("cphi"),
-                },
-            }
-        })
-        .collect()
+    mbench_rows().expect("mbench_a22_exact.csv")
 }
 
 /// Samples of every patch of a case (kernel geometry at CONTACT's approach), f64.
@@ -143,9 +94,9 @@ fn run<T: Real>(patches: &[Vec<StripSample<f64>>], row: &Row, cfg: &PipelineConf
     let mut ws = Box::new(DefaultWorkspace::<T>::new());
     let s = to_t::<T>(&patches[0]);
     let cr = Creepage {
-        xi: T::from_f64(row.cr.xi),
-        eta: T::from_f64(row.cr.eta),
-        phi: T::from_f64(row.cr.phi),
+        xi: T::from_f64(row.creepage().xi),
+        eta: T::from_f64(row.creepage().eta),
+        phi: T::from_f64(row.creepage().phi),
     };
     let r = solve_patch(&s, T::from_f64(row.fn_), &cr, &mat, cfg, &mut ws, &mut ()).unwrap();
     assert!(r.converged);
@@ -295,12 +246,12 @@ fn stripes_and_models_against_contact_mbench() {
         for (row, pts) in rows.iter().zip(&cases) {
             let o = run::<f64>(pts, row, &cfg);
             let dp = o.pmax / row.pmax - 1.0;
-            let da = o.area / row.area - 1.0;
+            let da = o.area / row.area() - 1.0;
             ep.push(dp);
             ea.push(da);
             if vi == 0 {
                 writeln!(txt, "| {:?} | {:4.1} | {:7.1} | {:7.1} | {:+6.1} | {:6.2} | {:6.2} | {:+6.1} | {} |",
-                    row.side, row.y_ws, row.pmax, o.pmax, 100.0 * dp, row.area, o.area, 100.0 * da, o.regions).unwrap();
+                    row.side, row.y_ws, row.pmax, o.pmax, 100.0 * dp, row.area(), o.area, 100.0 * da, o.regions).unwrap();
             }
         }
         let (pm, px, p10, _) = stats(&ep);
@@ -362,9 +313,9 @@ fn stripes_and_models_against_contact_mbench() {
             let mun = mu * row.fn_;
             let fr = |x: f64, y: f64| (x * x + y * y).sqrt();
             let comps = [
-                (o.fx, row.fx),
+                (o.fx, row.fx_wheel()),
                 (o.fy, row.fs),
-                (fr(o.fx, o.fy), fr(row.fx, row.fs)),
+                (fr(o.fx, o.fy), fr(row.fx_wheel(), row.fs)),
             ];
             if comps.iter().all(|(_, e)| e.abs() > 1e-3 * mun) {
                 for (mo, ex) in comps {
@@ -376,7 +327,7 @@ fn stripes_and_models_against_contact_mbench() {
                 efl += (mo - ex).abs() / ex.abs().max(0.1 * mun);
                 abs_all.push((mo - ex).abs() / mun);
             }
-            let c = (row.area / std::f64::consts::PI).sqrt();
+            let c = (row.area() / std::f64::consts::PI).sqrt();
             mz_all.push((o.mz - row.mn).abs() / (mun * c));
         }
         let e31 = 100.0 * e31 / (3.0 * n31 as f64);

@@ -6,56 +6,14 @@
 //! the reference point; the kernel finds its own load split and frame from F_z = 10 kN, so this
 //! tests geometry, STRIPES and the load loop end to end.
 
-use wrc_host_tests::data::shared_file;
 use wrc_host_tests::profiles;
+use wrc_host_tests::wheelrail::{mbench_rows, MbenchRow as Row};
 use wrc_kernel::geometry::*;
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::Material;
 
-struct Row {
-    side: Side,
-    y_ws: f64,
-    yaw: f64,
-    roll: f64,
-    approach: f64,
-    fn_: f64,
-    pmax: f64,
-    y_r: f64,
-    cr: wrc_kernel::patch::Creepage<f64>,
-}
-
 fn rows() -> Vec<Row> {
-    let text =
-        std::fs::read_to_string(shared_file("contact_reference/mbench_a22_exact.csv")).unwrap();
-    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
-    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
-    lines
-        .map(|l| {
-            let f: Vec<&str> = l.split(',').collect();
-            let g = |n: &str| f[col(n)].parse::<f64>().unwrap();
-            Row {
-                side: if f[col("side")] == "left" {
-                    Side::Left
-                } else {
-                    Side::Right
-                },
-                y_ws: g("y_ws"),
-                yaw: g("yaw_ws"),
-                roll: g("roll_ws"),
-                approach: g("approach"),
-                fn_: g("FN"),
-                pmax: g("pmax"),
-                y_r: g("ycp_r"),
-                // CONTACT module-1 creepages → kernel convention (methods.md §0.2)
-                cr: wrc_kernel::patch::Creepage {
-                    xi: -g("cksi"),
-                    eta: g("ceta"),
-                    phi: g("cphi"),
-                },
-            }
-        })
-        .collect()
+    mbench_rows().expect("mbench_a22_exact.csv")
 }
 
 #[test]
@@ -79,7 +37,7 @@ fn manchester_wheel_solve_matches_contact() {
             0.05,
         )
         .unwrap();
-        cfg.creepage = Some(r.cr);
+        cfg.creepage = Some(r.creepage());
         let res = solve_wheel(&geom, 10_000.0, &mat, &cfg, &mut ws, &mut ()).unwrap();
         assert!(res.converged, "y_ws {} {:?}", r.y_ws, r.side);
         assert!((res.vertical_load - 10_000.0).abs() < 1e-3);
@@ -95,13 +53,17 @@ fn manchester_wheel_solve_matches_contact() {
         println!(
             "{:5} {:5.1} {:8.1} {:8.1} {:6.2} {:8.5} {:8.5} {:6.2} {:7.0} {:7.0} {:6.2} {:2} {:8.3} {:8.3}",
             format!("{:?}", r.side), r.y_ws, r.fn_, fn_, e_fn, r.approach, main.frame.approach, e_ap,
-            r.pmax, main.result.pmax, e_pm, res.iterations, r.y_r, main.frame.y_ref_rail
+            r.pmax, main.result.pmax, e_pm, res.iterations, r.ycp_r, main.frame.y_ref_rail
         );
         // the weighted reference point at the kernel's own approach (CONTACT prints y_r in its
         // own lateral sense: mirrored for the left rail)
         let y_ref = main.frame.y_ref_rail * if r.side == Side::Left { -1.0 } else { 1.0 };
         if (r.y_ws - 0.5).abs() > 1e-9 || r.side == Side::Left {
-            assert!((y_ref - r.y_r).abs() < 0.15, "y_ref {y_ref} vs {}", r.y_r);
+            assert!(
+                (y_ref - r.ycp_r).abs() < 0.15,
+                "y_ref {y_ref} vs {}",
+                r.ycp_r
+            );
         }
         worst.0 = worst.0.max(e_fn.abs());
         worst.1 = worst.1.max(e_ap.abs());
