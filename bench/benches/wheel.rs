@@ -10,7 +10,8 @@
 //!   STRIPES solve, the strip layout, the AC adaptation, FaStrip (without and with the wear sink:
 //!   the difference is the wear), and the counts that multiply them (geometry passes, STRIPES
 //!   solves of the load split, coupling rounds, patches);
-//! then criterion's own statistics for one tread case and one flange case.
+//!
+//! Then criterion's own statistics for one tread case and one flange case.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use std::time::Instant;
