@@ -96,6 +96,9 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
 ) -> Result<Solved, String> {
     let cm = &args.common;
     let t = T::from_f64;
+    if cm.tangential == Tangential::Exact {
+        return solve_exact(args, keep_cells);
+    }
     match cm.normal.unwrap_or(Normal::Hertz) {
         Normal::Hertz => {}
         Normal::Norm => return solve_norm::<T, S, C>(args, keep_cells),
@@ -143,9 +146,7 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
                 let set = FastripSettings::new(mu);
                 fastrip(&patch, &pressure, &cr, &set, &mut sink)
             }
-            Tangential::Exact => {
-                return Err("--tangential exact is not available in this build".into())
-            }
+            Tangential::Exact => unreachable!("handled by solve_exact"),
         }
         .map_err(|e| e.to_string())?;
         Ok((h, res, sink, patch))
@@ -296,7 +297,7 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         Tangential::Fastrip => {
             fastrip(&patch, &pressure, &cr, &FastripSettings::new(mu), &mut sink)
         }
-        Tangential::Exact => return Err("--tangential exact is not available in this build".into()),
+        Tangential::Exact => unreachable!("handled by solve_exact"),
     }
     .map_err(|e| e.to_string())?;
     let wear_strips: Vec<(f64, f64)> = patch
@@ -350,5 +351,114 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         time_us,
         cell_mm: (g.dx, g.dy),
         wear_strips,
+    })
+}
+
+/// `--tangential exact` on an elliptic case: TANG (host reference, f64) on the Hertz pressure at
+/// the element centres (`--normal hertz`) or on NORM's pressure (`--normal norm`), grid
+/// `--cells` × `--strips` over ±1.1a × ±1.1b (see [`crate::exact`]).
+fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
+    use crate::exact::{self, NormalFields};
+    use wrc_host_tests::norm::{Control, Grid as NGrid, Norm, Options};
+    let cm = &args.common;
+    if cm.flex.unwrap_or(Flex::Hertz) != Flex::Hertz {
+        return Err("--flex applies to the simplified models, not to --tangential exact".into());
+    }
+    let (nx, ny) = (cm.cells, cm.strips);
+    if nx < 4 || ny < 4 {
+        return Err(format!(
+            "grid {ny} x {nx} too small for TANG (at least 4 x 4)"
+        ));
+    }
+    let mat = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(|e| e.to_string())?;
+    let h = hertz_of::<f64>(args, &mat)?;
+    let cr = wrc_host_tests::tang::Creepage {
+        xi: cm.xi.unwrap_or(0.0),
+        eta: cm.eta.unwrap_or(0.0),
+        phi: cm.phi.unwrap_or(0.0),
+    };
+    let mut warnings = vec![];
+    if cm.precision == crate::args::Precision::F32 {
+        warnings.push("--tangential exact runs in f64 (host reference)".to_string());
+    }
+    let (grid, pn, normal, norm_status) = match cm.normal.unwrap_or(Normal::Hertz) {
+        Normal::Hertz => {
+            let g = exact::elliptic_grid(h.a, h.b, nx, ny);
+            let pn = exact::hertz_on(&g, h.a, h.b, h.load);
+            let nf = NormalFields {
+                approach_mm: h.delta,
+                pmax_mpa: h.p0,
+                area_mm2: std::f64::consts::PI * h.a * h.b,
+                x_extent_mm: [-h.a, h.a],
+                y_extent_mm: [-h.b, h.b],
+            };
+            (g, pn, nf, None)
+        }
+        Normal::Norm => {
+            let control = if args.approach.is_some() {
+                Control::Penetration(h.delta)
+            } else {
+                Control::Load(h.load)
+            };
+            let (ca, cb) = (h.curv_a, h.curv_b);
+            let g = NGrid::new(
+                nx,
+                ny,
+                2.2 * h.a / nx as f64,
+                2.2 * h.b / ny as f64,
+                -1.1 * h.a,
+                -1.1 * h.b,
+            )
+            .map_err(|e| format!("NORM: {e}"))?;
+            let gap = g.sample(|x, y| ca * x * x + cb * y * y);
+            let sol = Norm::new(g, mat)
+                .and_then(|mut n| n.solve(&gap, control, &Options::default()))
+                .map_err(|e| format!("NORM: {e}"))?;
+            if sol.touches_boundary {
+                warnings.push("NORM contact reaches the grid boundary".to_string());
+            }
+            let (ex, ey) = (
+                sol.extent_x.unwrap_or((0.0, 0.0)),
+                sol.extent_y.unwrap_or((0.0, 0.0)),
+            );
+            let nf = NormalFields {
+                approach_mm: sol.approach,
+                pmax_mpa: sol.p_max,
+                area_mm2: sol.area,
+                x_extent_mm: [ex.0, ex.1],
+                y_extent_mm: [ey.0, ey.1],
+            };
+            let (tg, pn) = exact::norm_on(&sol);
+            (tg, pn, nf, Some(sol.converged))
+        }
+        Normal::Stripes => {
+            return Err(
+                "--normal stripes needs a wheel/rail gap; elliptic cases use hertz or norm".into(),
+            )
+        }
+    };
+    let ep = exact::solve(
+        grid,
+        &pn,
+        cr,
+        cm.mu,
+        &mat,
+        cm.speed * 1e3,
+        normal,
+        keep_cells,
+    );
+    let mut status = ep.status;
+    if norm_status == Some(false) {
+        status.converged = false;
+        warnings.push("NORM did not converge".to_string());
+    }
+    status.warnings.extend(warnings);
+    Ok(Solved {
+        patch: ep.patch,
+        cells: ep.cells,
+        status,
+        time_us: ep.time_us,
+        cell_mm: (grid.dx, grid.dy),
+        wear_strips: ep.wear_strips,
     })
 }

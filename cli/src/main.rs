@@ -3,6 +3,7 @@
 mod args;
 mod doc;
 mod elliptic;
+mod exact;
 mod plot;
 mod sink;
 mod sweep;

@@ -112,7 +112,7 @@ proptest! {
             1 => FlexMode::Single { sqrt_ab: (a * b).sqrt() },
             _ => FlexMode::Blended { a, b, load: n },
         };
-        let set = FastsimSettings { mu, bound, c_off, flex };
+        let set = FastsimSettings { mu, bound, c_off, flex, slip: wrc_kernel::fastsim::SlipRule::Clip };
         let both = [
             fastsim(&patch, &HertzPressure(ell), &cr, &set, &mut ()),
             fastsim(&patch, &SemiEllipticStrips, &cr, &set, &mut ()),

@@ -1250,11 +1250,10 @@ fn pipeline_is_bit_deterministic() {
 /// μ = 0.05, default pipeline: AC StripA + FaStrip) the strip-theory adhesion traction of the strip
 /// at y = −0.106 mm reaches |p_t| = 2.6 μ p_n in its three leading cells (x = 0.88…1.20 mm of
 /// a = 1.26 mm), while the totals stay at |F_t| = 0.47 μ F_n. FaStrip's default
-/// `BoundCheck::Off` (CONTACT M=6) documents that the adhesion zone is not checked, and the
-/// pipeline offers no way to select `BoundCheck::Local`; whether the default pipeline should
-/// enforce it is the tangential owner's decision, so this stays ignored.
+/// `BoundCheck::Off` (CONTACT M=6) did not check the adhesion zone; the kernel default is now
+/// `BoundCheck::Local` (evidence: the Hertzian matrix, `fastrip` module docs), which discards strip
+/// theory for such a strip and keeps the direction pass's FASTSIM tractions (within μ p_n).
 #[test]
-#[ignore = "FaStrip adhesion traction exceeds mu p_n near the leading edge (BoundCheck::Off default); see doc comment"]
 fn fastrip_adhesion_within_coulomb() {
     let p = PipeIn {
         geom: GeomIn {

@@ -19,15 +19,46 @@
 //!   (CONTACT M=5/M=6: d instead of (1−ν)d in the spin term, then normalised to κ² + λ² = 1).
 //! * [`LargeSpin::Contact5`] (default: same root while Δ ≥ 0 and √Δ − η*φ* > 0, else full slip) or
 //!   [`LargeSpin::FullSlip`] (CONTACT M=7: full slip whenever |φ*| ≥ 1).
-//! * Slip velocity: always the upwind form of §4.2, s = w̃ + (u(x_i) − u(x_{i+1}))/δx with
+//! * Slip velocity: always the upwind form of §4.2, s = w + (u(x_i) − u(x_{i+1}))/δx with
 //!   u = (L1 p_x, L2 p_y) of the final tractions and the direction pass's flexibilities, s = 0 in
-//!   adhesion (CONTACT instead keeps FASTSIM's slip; not offered).
+//!   adhesion (CONTACT instead keeps FASTSIM's slip; not offered). w is the true rigid slip when the
+//!   direction pass uses [`SlipRule::CoulombRigidSlip`] (default), FASTSIM's weighted w̃ otherwise.
+//! * Direction pass ([`FastripSettings::direction`]): the slip zone carries μ p_n in the direction
+//!   of the FASTSIM traction of the same cell. Default: [`SlipRule::CoulombRigidSlip`] (Coulomb's
+//!   law on the rigid slip in FASTSIM's slipping cells) and [`BoundCheck::Local`]; the spec's first
+//!   choice (`Clip`, no bound check) is [`FastripSettings::spec_clip`], the CONTACT modes are
+//!   [`FastripSettings::contact_m5`] / [`FastripSettings::contact_m6`] (unchanged, CONTACT rows
+//!   reproduced).
+//!
+//! Evidence for the defaults — the statistical Hertzian matrix (methods.md §10.10, 3220 cases,
+//! `study-hertz`), |ΔF|/(μF_n) against TANG (Richardson 10/20 elements per semi-axis), kernel
+//! 32 × 32, median / P95 / max, and |ΔM_z|/(μF_n c) median / P95:
+//!
+//! | FaStrip direction pass | ΔF median | P95 | max | ΔM_z median | P95 |
+//! |---|---|---|---|---|---|
+//! | `Clip`, no bound check (`spec_clip`) | 2.10 % | 11.0 % | 77.8 % | 1.37 % | 9.58 % |
+//! | `Coulomb` (on w̃) | 0.84 % | 6.99 % | 77.7 % | 1.28 % | 7.91 % |
+//! | `CoulombRigidSlip` | 0.43 % | 4.97 % | 76.4 % | 0.50 % | 5.41 % |
+//! | `CoulombRigidSlip` + `LargeSpin::FullSlip` | 0.43 % | 4.46 % | 13.8 % | 0.51 % | 5.02 % |
+//! | `CoulombRigidSlip` + `BoundCheck::Local` (default) | 0.43 % | 4.46 % | 13.8 % | 0.51 % | 4.76 % |
+//!
+//! `Clip` saturates along (ξ/L1, η/L2) instead of the creepage direction (up to 12.9 % of μF_n at
+//! full slip, a/b = 0.2); Coulomb's law on FASTSIM's own w̃ fixes that without spin, and the true
+//! rigid slip fixes it with spin (FASTSIM's spin weights L1/L3, L2/L3 belong to the adhesion
+//! regime). The 77 % maximum is `Contact5`'s root at |φ*| > 1 on a/b = 5 (η*φ* < 0): its adhesion
+//! traction exceeds μ p_n near the leading edge; the local bound check discards such strips (and
+//! keeps `Contact5` where it is valid: the §10.5 case with φ* = −1.0019). Against the grid-converged
+//! exact solution of the §10.5 case (TANG Richardson 20/40: F_y/(μN) = −0.6266) the default gives
+//! −0.6291 on 220², the spec's `Clip` pass −0.6097. What is left (P95 4.5 %) is spin with
+//! longitudinal creepage on wide patches (a/b ≤ 0.5, φ ρ/μ ≥ 1, |ΔF| up to 14 %): strip theory's
+//! X_j = ξ* − φ* y_j weights the spin by its linear-theory factor 3π√(b/a)C23/(4(1−ν)C11) ≈ 1.2,
+//! so the x-traction changes sign at y = ξ/(1.2φ) instead of ξ/φ once the strips slip.
 //! * CONTACT M=6 details are options: [`FastripSettings::leading_slip_retry`] and
 //!   [`FastripSettings::edge_margin`]; the M=6 load heuristic of the parabolic bound is
 //!   [`m6_parabolic_bound`].
 
 use crate::error::{check_finite, check_positive, Error};
-use crate::fastsim::{march_strip, FastsimSettings, FlexMode};
+use crate::fastsim::{march_strip, FastsimSettings, FlexMode, SlipRule};
 use crate::math::{self, c};
 use crate::patch::{
     CellOut, CellSink, Creepage, Ellipse, Flexibilities, PressureField, StripPatch, Tangential,
@@ -88,16 +119,33 @@ pub struct FastripSettings<T> {
 }
 
 impl<T: Real> FastripSettings<T> {
-    /// Defaults of methods.md §4: StripTheory λ, `Contact5`, no bound check, direction pass canonical
-    /// FASTSIM with the `Elliptic` bound (μ p_n).
+    /// The kernel's defaults: StripTheory λ, `Contact5`, `BoundCheck::Local`, direction pass
+    /// canonical FASTSIM with the `Elliptic` bound (μ p_n) and Coulomb's law on the rigid slip in
+    /// its slipping cells ([`SlipRule::CoulombRigidSlip`]). See the module docs for the evidence.
     pub fn new(mu: T) -> Self {
         Self {
-            direction: FastsimSettings::canonical(mu, TractionBound::Elliptic),
+            direction: FastsimSettings::with_slip(
+                mu,
+                TractionBound::Elliptic,
+                SlipRule::CoulombRigidSlip,
+            ),
             lambda: LambdaVariant::StripTheory,
             large_spin: LargeSpin::Contact5,
-            bound_check: BoundCheck::Off,
+            bound_check: BoundCheck::Local,
             leading_slip_retry: None,
             edge_margin: T::ZERO,
+        }
+    }
+
+    /// The defaults of methods.md §4 as first implemented (the prototype's FaStrip without its bound
+    /// check): StripTheory λ, `Contact5`, no bound check, direction pass canonical FASTSIM
+    /// ([`SlipRule::Clip`]) with the `Elliptic` bound. Kept for comparison with the spec's
+    /// prototype rows (methods.md §10.5).
+    pub fn spec_clip(mu: T) -> Self {
+        Self {
+            direction: FastsimSettings::canonical(mu, TractionBound::Elliptic),
+            bound_check: BoundCheck::Off,
+            ..Self::new(mu)
         }
     }
 }
@@ -107,7 +155,7 @@ impl<T: Real> FastripSettings<T> {
     /// FASTSIM with the parabolic bound and the load heuristic ([`m6_parabolic_bound`]), leading-slip
     /// retry with L_t, edge margin 1e-3 mm, no bound check (methods.md §4.5 item 4).
     pub fn contact_m6(mu: T, ellipse: Ellipse<T>, lambda: LambdaVariant) -> Self {
-        let mut s = Self::new(mu);
+        let mut s = Self::spec_clip(mu);
         s.direction.bound = m6_parabolic_bound(ellipse);
         s.leading_slip_retry = Some(math::sqrt(ellipse.a * ellipse.b));
         s.edge_margin = c(1e-3);
@@ -127,7 +175,7 @@ impl<T: Real> FastripSettings<T> {
         equiv: Ellipse<T>,
         lambda: LambdaVariant,
     ) -> Self {
-        let mut s = Self::new(mu);
+        let mut s = Self::spec_clip(mu);
         s.direction.flex = FlexMode::Blended { a, b, load };
         s.direction.c_off = c(1.0 / 6.0);
         s.bound_check = BoundCheck::Peak(mu * equiv.p0);
@@ -318,6 +366,7 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
                 mu,
                 &dset.bound,
                 dset.c_off,
+                dset.slip,
                 fl,
                 margin,
                 |i, o| {
@@ -375,6 +424,7 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
                 mu,
                 &dset.bound,
                 dset.c_off,
+                dset.slip,
                 &fl,
                 margin,
                 |i, o| {
@@ -384,7 +434,13 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
             );
         } else {
             let area = dx * s.dy;
-            let wtx = cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y;
+            // Slip velocity on the same rigid slip as the direction pass's slipping cells.
+            let rigid = dset.slip == SlipRule::CoulombRigidSlip;
+            let wtx = if rigid {
+                cr.xi - cr.phi * s.y
+            } else {
+                cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y
+            };
             let mut up = [T::ZERO; 2]; // u of the upstream neighbour
             for ii in 0..C {
                 let i = C - 1 - ii;
@@ -396,7 +452,11 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
                     continue;
                 }
                 let pn = pressure.pn(j, i, x, &s);
-                let wty = cr.eta + (fl.l2 / fl.l3) * cr.phi * (x + dset.c_off * dx);
+                let wty = if rigid {
+                    cr.eta + cr.phi * x
+                } else {
+                    cr.eta + (fl.l2 / fl.l3) * cr.phi * (x + dset.c_off * dx)
+                };
                 let wx = cr.xi - cr.phi * s.y;
                 let wy = cr.eta + cr.phi * x;
                 let (px, py, slip, bound) = match adhesion_traction(&ss, s.a, xb) {

@@ -40,6 +40,77 @@ pub enum FlexMode<T> {
     },
 }
 
+/// How a slipping cell's traction is found (methods.md §3.3).
+///
+/// Evidence (statistical Hertzian matrix of methods.md §10.10 against the exact steady-rolling
+/// solution TANG, `host-tests/src/bin/study-hertz.rs`, 3220 cases, kernel 32 × 32): see the
+/// numbers in the README section "Accuracy study"; `Clip` saturates along (ξ/L1, η/L2) instead of
+/// the creepage direction, which costs up to 12.9 % of μF_n at full slip when L1 ≠ L2 (a/b = 0.2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum SlipRule {
+    /// Seed A eqs. (7)–(8) and CONTACT: the adhesion trial p^H keeps its direction and is clipped
+    /// to the bound, p = g p^H/|p^H|. Needed to reproduce CONTACT's FASTSIM numbers. The slip is then
+    /// antiparallel to p only when L1 = L2.
+    Clip,
+    /// Coulomb's law in the cell: p = −g s/|s| with the cell's own slip
+    /// s = w̃ + (L1(p_x − p⁺_x), L2(p_y − p⁺_y))/δx, i.e. p = g t with
+    /// t = −((σ + gL1/δx)⁻¹ v_x, (σ + gL2/δx)⁻¹ v_y), v = w̃ − (L1 p⁺_x, L2 p⁺_y)/δx and σ = |s| the
+    /// root of |t| = 1 (Newton, monotone from a lower bound, at most [`COULOMB_MAX_ITER`] steps).
+    /// At large creepage the traction follows −w̃, the (flexibility-weighted) rigid slip.
+    Coulomb,
+    /// As [`SlipRule::Coulomb`] but with the true rigid slip w = (ξ − φy, η + φx) in place of w̃
+    /// in the slipping cells: s = w + (L1(p_x − p⁺_x), L2(p_y − p⁺_y))/δx, p = −g s/|s|. The spin
+    /// weighting L1/L3, L2/L3 of w̃ is Kalker's device for the linear (adhesion) regime; in slip the
+    /// physical slip is w − ∂u/∂x, so at large creepage the traction follows −w as in the exact
+    /// theory (methods.md §10.7). Adhesion cells are unchanged (w̃, s = 0), so the linear limit is
+    /// Kalker's. FaStrip's default direction pass (evidence in [`crate::fastrip`]).
+    CoulombRigidSlip,
+}
+
+/// Iteration cap of the per-cell Newton solve of [`SlipRule::Coulomb`] (it converges
+/// quadratically from a bracketing start; 2–5 steps are typical).
+pub const COULOMB_MAX_ITER: usize = 30;
+
+/// The traction of a slipping cell under [`SlipRule::Coulomb`]: bound `g` (MPa), diagonal cell
+/// compliances `c1` = L1/δx, `c2` = L2/δx (mm/MPa per mm) and the slip with the cell's own traction
+/// removed, `v` (dimensionless). Requires |C⁻¹v| > g (the adhesion trial failed). Returns p.
+#[inline]
+pub(crate) fn coulomb_cell<T: Real>(g: T, c1: T, c2: T, vx: T, vy: T) -> (T, T) {
+    if g <= T::ZERO {
+        return (T::ZERO, T::ZERO);
+    }
+    let (gc1, gc2) = (g * c1, g * c2);
+    // Lower bound of the root: f(σ) ≥ 0 there.
+    let mut sig = math::max(T::ZERO, math::hypot(vx, vy) - math::max(gc1, gc2));
+    let tol = math::c::<T>(8.0) * T::EPSILON;
+    for _ in 0..COULOMB_MAX_ITER {
+        let (d1, d2) = (sig + gc1, sig + gc2);
+        let (tx, ty) = (vx / d1, vy / d2);
+        let f = tx * tx + ty * ty - T::ONE;
+        // f'(σ) = −2(v_x²/d1³ + v_y²/d2³) < 0.
+        let fp = -T::TWO * (tx * tx / d1 + ty * ty / d2);
+        // NaN-safe: stop unless f > 0 and f' < 0 are both true.
+        let descending = fp < T::ZERO && f > T::ZERO;
+        if !descending {
+            break;
+        }
+        let step = -f / fp;
+        sig += step;
+        if step <= tol * (sig + math::min(gc1, gc2)) {
+            break;
+        }
+    }
+    let (tx, ty) = (-vx / (sig + gc1), -vy / (sig + gc2));
+    let m = math::hypot(tx, ty);
+    if m > T::ZERO && math::is_finite(m) {
+        (g * tx / m, g * ty / m)
+    } else {
+        let mv = math::hypot(vx, vy);
+        (-g * vx / mv, -g * vy / mv)
+    }
+}
+
 /// FASTSIM options.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -52,16 +123,27 @@ pub struct FastsimSettings<T> {
     pub c_off: T,
     /// Flexibility mode.
     pub flex: FlexMode<T>,
+    /// Traction of a slipping cell.
+    pub slip: SlipRule,
 }
 
 impl<T: Real> FastsimSettings<T> {
-    /// Canonical FASTSIM: three flexibilities, c_off = 0.
+    /// Canonical FASTSIM (Kalker 1982, seed A): three flexibilities, c_off = 0, [`SlipRule::Clip`].
     pub fn canonical(mu: T, bound: TractionBound<T>) -> Self {
         Self {
             mu,
             bound,
             c_off: T::ZERO,
             flex: FlexMode::Three,
+            slip: SlipRule::Clip,
+        }
+    }
+
+    /// [`FastsimSettings::canonical`] with a different slip rule.
+    pub fn with_slip(mu: T, bound: TractionBound<T>, slip: SlipRule) -> Self {
+        Self {
+            slip,
+            ..Self::canonical(mu, bound)
         }
     }
 
@@ -72,6 +154,7 @@ impl<T: Real> FastsimSettings<T> {
             bound,
             c_off: math::c(1.0 / 6.0),
             flex: FlexMode::Blended { a, b, load },
+            slip: SlipRule::Clip,
         }
     }
 
@@ -133,6 +216,7 @@ pub(crate) fn march_strip<T: Real, const S: usize, const C: usize, P: PressureFi
     mu: T,
     bound: &TractionBound<T>,
     c_off: T,
+    rule: SlipRule,
     fl: &Flexibilities<T>,
     margin: T,
     mut emit: impl FnMut(usize, &CellOut<T>),
@@ -165,8 +249,21 @@ pub(crate) fn march_strip<T: Real, const S: usize, const C: usize, P: PressureFi
         let (px, py, slip, sx, sy) = if mag <= g {
             (phx, phy, false, T::ZERO, T::ZERO)
         } else {
-            let f = g / mag;
-            let (px, py) = (phx * f, phy * f);
+            let (px, py) = match rule {
+                SlipRule::Clip => {
+                    let f = g / mag;
+                    (phx * f, phy * f)
+                }
+                SlipRule::Coulomb => {
+                    let (c1, c2) = (l1 / dx, l2 / dx);
+                    coulomb_cell(g, c1, c2, wtx - c1 * ppx, wty - c2 * ppy)
+                }
+                SlipRule::CoulombRigidSlip => {
+                    let (c1, c2) = (l1 / dx, l2 / dx);
+                    let (wx, wy) = (cr.xi - cr.phi * s.y, cr.eta + cr.phi * x);
+                    coulomb_cell(g, c1, c2, wx - c1 * ppx, wy - c2 * ppy)
+                }
+            };
             (
                 px,
                 py,
@@ -226,6 +323,7 @@ pub fn fastsim<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
             set.mu,
             &set.bound,
             set.c_off,
+            set.slip,
             &fl,
             T::ZERO,
             |i, o| {
@@ -237,4 +335,33 @@ pub fn fastsim<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
         res.total.merge(&tot);
     }
     res.checked()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The Coulomb cell solution lies on the circle |p| = g and opposes its own slip
+    /// s = v + C p (C = diag(c1, c2)), also for strongly anisotropic C.
+    #[test]
+    fn coulomb_cell_on_circle_opposing_slip() {
+        for &(c1, c2, vx, vy, g) in &[
+            (2.0, 0.5, 0.7, -1.9, 0.4),
+            (0.1, 3.0, -5.0, 0.2, 1.0),
+            (1.0, 1.0, 0.0, 2.0, 0.5),
+            (1e-3, 10.0, 1.0, 1.0, 1e-2),
+        ] {
+            let (px, py): (f64, f64) = coulomb_cell(g, c1, c2, vx, vy);
+            assert!((px.hypot(py) - g).abs() < 1e-12 * g);
+            let (sx, sy) = (vx + c1 * px, vy + c2 * py);
+            let sn = sx.hypot(sy);
+            assert!((px + g * sx / sn).abs() < 1e-9 * g, "{px} {sx}");
+            assert!((py + g * sy / sn).abs() < 1e-9 * g, "{py} {sy}");
+        }
+        // Same in f32 to its precision.
+        let (px, py) = coulomb_cell(0.4f32, 2.0, 0.5, 0.7, -1.9);
+        let (sx, sy) = (0.7 + 2.0 * px, -1.9 + 0.5 * py);
+        let sn = sx.hypot(sy);
+        assert!((px + 0.4 * sx / sn).abs() < 1e-5 && (py + 0.4 * sy / sn).abs() < 1e-5);
+    }
 }

@@ -141,8 +141,16 @@ pub struct WheelResult<T, const K: usize, const NR: usize> {
     pub vertical_approach: T,
     /// Σ N_k cos δ_k reached, N.
     pub vertical_load: T,
-    /// Geometry passes used.
+    /// Passes of the load loop, over all coupling rounds.
     pub iterations: u32,
+    /// [`contact_patches`] evaluations (≤ `iterations`: a pass at the vertical approach of the
+    /// previous pass — the first pass of every coupling round and of the final split — reuses
+    /// its patches).
+    pub geometry_calls: u32,
+    /// Normal–tangential coupling rounds used (≤ [`MAX_COUPLING`]).
+    pub coupling_rounds: u32,
+    /// STRIPES load-control solves of the load split (inverse load control, all passes).
+    pub stripes_solves: u32,
     /// Load and approach tolerances met in every loop, and every STRIPES solve converged.
     pub converged: bool,
 }
@@ -176,6 +184,10 @@ pub struct WheelWorkspace<
     pub pipeline: Workspace<T, NS, NR, S, C, SS>,
     loads: [T; K],
     ratio: [T; K],
+    solves: u32,
+    geometry_calls: u32,
+    /// δ_v of the patches in `patches` (valid within one `solve_wheel` call only).
+    patches_dv: Option<T>,
 }
 
 /// The default wheel workspace: 4 patches of 128 samples, the default pipeline workspace.
@@ -200,6 +212,9 @@ impl<
             pipeline: Workspace::new(),
             loads: [T::ZERO; K],
             ratio: [T::ZERO; K],
+            solves: 0,
+            geometry_calls: 0,
+            patches_dv: None,
         }
     }
 }
@@ -257,7 +272,7 @@ fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> T {
     x1 * math::exp(step)
 }
 
-/// STRIPES load whose approach equals `a` (mm) on `samples`; returns (load, converged).
+/// STRIPES load whose approach equals `a` (mm) on `samples`; returns (load, converged, solves).
 fn load_for_approach<
     T: Real,
     const NS: usize,
@@ -272,17 +287,17 @@ fn load_for_approach<
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
-) -> Result<(T, bool), Error> {
+) -> Result<(T, bool, u32), Error> {
     let mut n1 = guess;
     let (mut n0, mut d0) = (T::ZERO, T::ZERO);
-    for _ in 0..MAX_INNER {
+    for it in 0..MAX_INNER {
         let sol = ws.stripes.solve(samples, n1, mat, &cfg.pipeline.stripes)?;
         let d1 = sol.delta;
         if !(d1 > T::ZERO) || !math::is_finite(d1) {
             return Err(Error::NonFinite("stripes approach"));
         }
         if math::abs(d1 - a) <= cfg.tol * a {
-            return Ok((n1, sol.converged));
+            return Ok((n1, sol.converged, it + 1));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
         let next = loglog_step_inverse(d0, n0, d1, n1, a);
@@ -290,7 +305,7 @@ fn load_for_approach<
         d0 = d1;
         n1 = next;
     }
-    Ok((n1, false))
+    Ok((n1, false, MAX_INNER))
 }
 
 /// The inverse relation N(δ): secant on (ln δ, ln N) from the last two solves, exponent 1.5
@@ -345,7 +360,13 @@ fn split_load<
     let (mut dv0, mut f0) = (T::ZERO, T::ZERO);
     let mut fsum = T::ZERO;
     for pass in 0..MAX_OUTER {
-        contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+        // the patches depend only on (geom, δ_v, options), fixed within one call
+        if ws.patches_dv != Some(dv) {
+            ws.patches_dv = None;
+            contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+            ws.patches_dv = Some(dv);
+            ws.geometry_calls += 1;
+        }
         fsum = T::ZERO;
         let mut inner_ok = true;
         let np = ws.patches.len.min(K);
@@ -364,7 +385,8 @@ fn split_load<
             }
             let n = samples_of(&ws.patches, k, &mut ws.samples);
             match load_for_approach(&ws.samples[..n], a, guess, mat, cfg, &mut ws.pipeline) {
-                Ok((nk, ok)) => {
+                Ok((nk, ok, it)) => {
+                    ws.solves += it;
                     ws.loads[k] = nk;
                     inner_ok &= ok;
                     let factor = math::cos(frame.angle) + ws.ratio[k] * ey_z(geom, frame.angle);
@@ -425,12 +447,17 @@ pub fn solve_wheel<
     check_positive(cfg.tol, "tol")?;
     ws.ratio = [T::ZERO; K];
     ws.loads = [T::ZERO; K];
+    ws.solves = 0;
+    ws.geometry_calls = 0;
+    ws.patches_dv = None;
     let mut dv = math::c::<T>(0.05);
     let mut passes = 0;
     let mut ok = false;
     let mut vload = T::ZERO;
     let mut coupled = false;
+    let mut rounds = 0;
     for round in 0..MAX_COUPLING {
+        rounds = round + 1;
         let (d, f, p, c) = split_load(geom, fz, dv, mat, cfg, ws)?;
         dv = d;
         vload = f;
@@ -476,6 +503,9 @@ pub fn solve_wheel<
         vertical_approach: dv,
         vertical_load: vload,
         iterations: passes,
+        geometry_calls: ws.geometry_calls,
+        coupling_rounds: rounds,
+        stripes_solves: ws.solves,
         converged: ok && coupled,
     };
     let np = ws.patches.len.min(K);

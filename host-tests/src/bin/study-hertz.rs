@@ -7,15 +7,17 @@
 //! Options: `--coarse N` (reference coarse grid, elements per semi-axis, default 10), `--fine N`
 //! (default 20 = 2·coarse; must be 2·coarse), `--threads T` (default 2), `--out PATH` (default
 //! `out/hertz_matrix.csv`), `--check-convergence` (instead of the matrix: a subset solved also at
-//! 2·fine to measure the reference's own error).
+//! 2·fine to measure the reference's own error), `--quick` (subsample for iteration: directions
+//! −60°, 0°, 30°, 90° and every other magnitude, 960 cases), `--reference CSV` (read the reference
+//! forces of an earlier run's CSV and solve only the models: seconds instead of 23 minutes; output
+//! `out/hertz_matrix_models.csv`).
 //!
 //! Reference: TANG on Hertz pressure at element centres (rescaled to F_n) on two grids with
 //! n and 2n elements per semi-axis over ±1.1a × ±1.1b, Richardson-extrapolated (2·fine − coarse):
 //! TANG's discretisation error is first order in δx (Carter, Kalker linear and CONTACT tests in
 //! `tests/tang.rs`). Each creep curve is warm-started from its previous magnitude.
 //! Models (kernel, f64, 32 strips × 32 cells over ±1.1a × ±1.1b, the kernel default grid of §0.5):
-//! FASTSIM canonical with the `Parabolic` bound (Kalker) and with the `Elliptic` bound (μ p_n);
-//! FaStrip with its defaults (`FastripSettings::new`: StripTheory λ, Contact5, μ p_n).
+//! see [`MODEL_NAMES`].
 //! Errors: |ΔF|/(μF_n) = |(ΔF_x, ΔF_y)|/(μF_n); |ΔM_z|/(μF_n c), c = √(ab).
 
 use std::f64::consts::PI;
@@ -23,9 +25,10 @@ use std::io::Write;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
+use wrc_host_tests::table::Table;
 use wrc_host_tests::tang::{hertz_pressure, richardson, Creepage, Grid, TangOptions, TangSolver};
-use wrc_kernel::fastrip::{fastrip, FastripSettings};
-use wrc_kernel::fastsim::{fastsim, FastsimSettings};
+use wrc_kernel::fastrip::{fastrip, FastripSettings, LargeSpin};
+use wrc_kernel::fastsim::{fastsim, FastsimSettings, SlipRule};
 use wrc_kernel::hertz::curvatures_from_semi_axes;
 use wrc_kernel::patch::{self, GridExtent, HertzPressure, StripPatch, TractionBound};
 use wrc_kernel::Material;
@@ -61,12 +64,32 @@ struct Row {
     sweeps: (usize, usize),
     converged: bool,
     t_ref: f64,
-    models: [F3; 3],
+    models: Vec<F3>,
 }
 
-const MODEL_NAMES: [&str; 3] = ["fastsim_parabolic", "fastsim_elliptic", "fastrip"];
+/// The models compared, by name (CSV column prefix):
+/// * FASTSIM canonical (`SlipRule::Clip`, seed A / CONTACT) with the `Parabolic` and the `Elliptic`
+///   bound; `…_coulomb`: Coulomb's law on FASTSIM's slip in the slipping cells
+///   (`SlipRule::Coulomb`); `…_rigid`: on the rigid slip (`SlipRule::CoulombRigidSlip`);
+/// * FaStrip: `fastrip_spec` = `FastripSettings::spec_clip` (the defaults before this study: `Clip`
+///   direction pass, no bound check); `fastrip_coulomb`, `fastrip_rigid`: the same with the
+///   direction pass's slip rule changed; `fastrip_rigid_fullslip`: plus `LargeSpin::FullSlip`;
+///   `fastrip` = `FastripSettings::new`, the kernel default (rigid-slip Coulomb direction pass,
+///   `Contact5`, `BoundCheck::Local`).
+const MODEL_NAMES: [&str; 10] = [
+    "fastsim_parabolic",
+    "fastsim_elliptic",
+    "fastsim_parabolic_coulomb",
+    "fastsim_parabolic_rigid",
+    "fastsim_elliptic_rigid",
+    "fastrip_spec",
+    "fastrip_coulomb",
+    "fastrip_rigid",
+    "fastrip_rigid_fullslip",
+    "fastrip",
+];
 
-fn kernel_models(a: f64, b: f64, cr: Creepage, c: f64) -> [F3; 3] {
+fn kernel_models(a: f64, b: f64, cr: Creepage, c: f64) -> Vec<F3> {
     let mat = Material::from_g_nu(G, NU).expect("material");
     let (patch, ell): (StripPatch<f64, KS, KS>, _) =
         StripPatch::hertz(a, b, FN, &mat, GridExtent::contact()).expect("patch");
@@ -77,24 +100,50 @@ fn kernel_models(a: f64, b: f64, cr: Creepage, c: f64) -> [F3; 3] {
         phi: cr.phi,
     };
     let norm = |t: &patch::Totals<f64>| [t.fx / (MU * FN), t.fy / (MU * FN), t.mz / (MU * FN * c)];
-    let fs_p = fastsim(
-        &patch,
-        &pr,
-        &kc,
-        &FastsimSettings::canonical(MU, TractionBound::Parabolic(ell)),
-        &mut (),
-    )
-    .expect("fastsim");
-    let fs_e = fastsim(
-        &patch,
-        &pr,
-        &kc,
-        &FastsimSettings::canonical(MU, TractionBound::Elliptic),
-        &mut (),
-    )
-    .expect("fastsim");
-    let fr = fastrip(&patch, &pr, &kc, &FastripSettings::new(MU), &mut ()).expect("fastrip");
-    [norm(&fs_p.total), norm(&fs_e.total), norm(&fr.total)]
+    let fs = |bound: TractionBound<f64>, slip: SlipRule| {
+        let set = FastsimSettings::with_slip(MU, bound, slip);
+        norm(
+            &fastsim(&patch, &pr, &kc, &set, &mut ())
+                .expect("fastsim")
+                .total,
+        )
+    };
+    let fr = |set: FastripSettings<f64>| {
+        norm(
+            &fastrip(&patch, &pr, &kc, &set, &mut ())
+                .expect("fastrip")
+                .total,
+        )
+    };
+    let spec = FastripSettings::spec_clip(MU);
+    let dir = |slip| FastsimSettings::with_slip(MU, TractionBound::Elliptic, slip);
+    let (par, ellb) = (TractionBound::Parabolic(ell), TractionBound::Elliptic);
+    MODEL_NAMES
+        .iter()
+        .map(|name| match *name {
+            "fastsim_parabolic" => fs(par, SlipRule::Clip),
+            "fastsim_elliptic" => fs(ellb, SlipRule::Clip),
+            "fastsim_parabolic_coulomb" => fs(par, SlipRule::Coulomb),
+            "fastsim_parabolic_rigid" => fs(par, SlipRule::CoulombRigidSlip),
+            "fastsim_elliptic_rigid" => fs(ellb, SlipRule::CoulombRigidSlip),
+            "fastrip_spec" => fr(spec),
+            "fastrip_coulomb" => fr(FastripSettings {
+                direction: dir(SlipRule::Coulomb),
+                ..spec
+            }),
+            "fastrip_rigid" => fr(FastripSettings {
+                direction: dir(SlipRule::CoulombRigidSlip),
+                ..spec
+            }),
+            "fastrip_rigid_fullslip" => fr(FastripSettings {
+                direction: dir(SlipRule::CoulombRigidSlip),
+                large_spin: LargeSpin::FullSlip,
+                ..spec
+            }),
+            "fastrip" => fr(FastripSettings::new(MU)),
+            other => unreachable!("model {other}"),
+        })
+        .collect()
 }
 
 struct Level {
@@ -128,6 +177,8 @@ fn main() {
     let mut threads = 2usize;
     let mut out = String::from("out/hertz_matrix.csv");
     let mut check = false;
+    let mut quick = false;
+    let mut reference: Option<String> = None;
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut k = 0;
     while k < args.len() {
@@ -150,6 +201,11 @@ fn main() {
                 k += 1;
             }
             "--check-convergence" => check = true,
+            "--quick" => quick = true,
+            "--reference" => {
+                reference = Some(val(k));
+                k += 1;
+            }
             other => panic!("unknown option {other} (see the module docs)"),
         }
         k += 1;
@@ -170,11 +226,22 @@ fn main() {
                 if check && !(is == 2 && ia == 4 && ie % 2 == 0) {
                     continue;
                 }
+                if quick && ![1, 3, 4, 6].contains(&ia) {
+                    continue;
+                }
                 items.push((ie, is, ia));
             }
         }
     }
     let t0 = Instant::now();
+    if let Some(path) = &reference {
+        let rows = reuse_reference(path);
+        if out == "out/hertz_matrix.csv" {
+            out = String::from("out/hertz_matrix_models.csv");
+        }
+        write_and_summarise(rows, &out, false, coarse_n, fine_n, threads, t0);
+        return;
+    }
     let next = AtomicUsize::new(0);
     let rows: Mutex<Vec<Row>> = Mutex::new(Vec::new());
     std::thread::scope(|sc| {
@@ -213,7 +280,10 @@ fn main() {
                     };
                     let mut warm: Vec<Option<(Vec<f64>, Vec<f64>)>> = vec![None, None, None];
                     let mut local = Vec::new();
-                    for &m in MAG.iter() {
+                    for (im, &m) in MAG.iter().enumerate() {
+                        if quick && im % 2 == 1 {
+                            continue;
+                        }
                         let cr = Creepage {
                             xi: m * MU * al.cos() * c / rho,
                             eta: m * MU * al.sin() * c / rho,
@@ -273,7 +343,62 @@ fn main() {
             });
         }
     });
-    let mut rows = rows.into_inner().unwrap();
+    let rows = rows.into_inner().unwrap();
+    write_and_summarise(rows, &out, check, coarse_n, fine_n, threads, t0);
+}
+
+/// Rows of an earlier run's CSV (`--reference`): the reference forces and creepages are read back,
+/// the models are solved again (so a model change is measured in seconds, not 23 minutes).
+fn reuse_reference(path: &str) -> Vec<Row> {
+    let t = Table::read(std::path::Path::new(path));
+    let f = |r: usize, c: &str| t.f64(r, c).unwrap_or_else(|| panic!("{path}: bad {c}"));
+    (0..t.rows.len())
+        .map(|r| {
+            let (a, b) = (f(r, "a"), f(r, "b"));
+            let cr = Creepage {
+                xi: f(r, "xi"),
+                eta: f(r, "eta"),
+                phi: f(r, "phi"),
+            };
+            let c = (a * b).sqrt();
+            let g3 = |p: &str| {
+                [
+                    f(r, &format!("{p}_fx")),
+                    f(r, &format!("{p}_fy")),
+                    f(r, &format!("{p}_mz")),
+                ]
+            };
+            Row {
+                ab: f(r, "a_over_b"),
+                a,
+                b,
+                s: f(r, "spin_s"),
+                alpha: f(r, "alpha_deg"),
+                m: f(r, "m"),
+                cr,
+                coarse: g3("coarse"),
+                fine: g3("fine"),
+                extra: None,
+                reference: g3("ref"),
+                sweeps: (f(r, "sweeps_coarse") as usize, f(r, "sweeps_fine") as usize),
+                converged: t.str(r, "converged") == "true",
+                t_ref: f(r, "t_ref_s"),
+                models: kernel_models(a, b, cr, c),
+            }
+        })
+        .collect()
+}
+
+#[allow(clippy::too_many_arguments)]
+fn write_and_summarise(
+    mut rows: Vec<Row>,
+    out: &str,
+    check: bool,
+    coarse_n: usize,
+    fine_n: usize,
+    threads: usize,
+    t0: Instant,
+) {
     rows.sort_by(|x, y| {
         (x.ab, x.s, x.alpha, x.m)
             .partial_cmp(&(y.ab, y.s, y.alpha, y.m))
@@ -285,7 +410,7 @@ fn main() {
     if let Some(dir) = std::path::Path::new(&out).parent() {
         std::fs::create_dir_all(dir).ok();
     }
-    let mut f = std::fs::File::create(&out).expect("output file");
+    let mut f = std::fs::File::create(out).expect("output file");
     write!(
         f,
         "a_over_b,a,b,spin_s,alpha_deg,m,xi,eta,phi,ref_fx,ref_fy,ref_mz,coarse_fx,coarse_fy,coarse_mz,fine_fx,fine_fy,fine_mz,"
@@ -368,8 +493,13 @@ fn main() {
     for (mi, name) in MODEL_NAMES.iter().enumerate() {
         let mut all: Vec<f64> = Vec::new();
         let mut allm: Vec<f64> = Vec::new();
-        println!("\n{name}: |ΔF|/(μFn) in % (median / P95 / max) and |ΔMz|/(μFn c) median / P95");
-        println!("  a/b   spin   median    P95     max   | Mz med   P95");
+        let detail = matches!(*name, "fastsim_parabolic" | "fastrip_spec" | "fastrip");
+        if detail {
+            println!(
+                "\n{name}: |ΔF|/(μFn) in % (median / P95 / max) and |ΔMz|/(μFn c) median / P95"
+            );
+            println!("  a/b   spin   median    P95     max   | Mz med   P95");
+        }
         for &(ab, _) in ELLIPSES.iter() {
             for &s in SPIN.iter() {
                 let sel: Vec<&Row> = rows.iter().filter(|r| r.ab == ab && r.s == s).collect();
@@ -388,6 +518,9 @@ fn main() {
                     .collect();
                 all.extend(&d);
                 allm.extend(&dm);
+                if !detail {
+                    continue;
+                }
                 println!(
                     "  {ab:<4}  {s:<4}  {:6.2}  {:6.2}  {:6.2}   | {:6.2} {:6.2}",
                     100.0 * pct(&mut d.clone(), 0.5),
@@ -399,7 +532,7 @@ fn main() {
             }
         }
         println!(
-            "  ALL ({} cases): |ΔF| median {:.2} %, P95 {:.2} %, max {:.2} %; |ΔMz|/(μFn c) median {:.2} %, P95 {:.2} %",
+            "{name:>26} ALL ({} cases): |ΔF| median {:.2} %, P95 {:.2} %, max {:.2} %; |ΔMz|/(μFn c) median {:.2} %, P95 {:.2} %",
             all.len(),
             100.0 * pct(&mut all.clone(), 0.5),
             100.0 * pct(&mut all.clone(), 0.95),

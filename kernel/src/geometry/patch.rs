@@ -55,8 +55,9 @@
 
 use super::isosceles;
 use super::placement::WheelRail;
-use crate::profile::illinois;
+use crate::profile::{illinois, SegmentCache};
 use crate::{math, Error, Real};
+use core::cell::Cell;
 
 /// How the patch reference point and contact angle are chosen (§7.2 step 6).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -722,13 +723,21 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     let mut wheel = geom.wheel;
     wheel.cz -= frame.approach_vertical;
     let rail = geom.rail;
+    // Position-only evaluations with segment caches (root finding stays in one segment most of
+    // the time: the node tangents' trigonometry is then computed once per segment).
+    let rcache = Cell::new(SegmentCache::new());
+    let wcache = Cell::new(SegmentCache::new());
     let rpos = |t: T| {
-        let p = rail.at(t);
-        (p.y, p.z)
+        let mut c = rcache.get();
+        let p = rail.pos_cached(t, &mut c);
+        rcache.set(c);
+        p
     };
     let wpos = |t: T| {
-        let p = wheel.at(t);
-        (p.y, p.z)
+        let mut c = wcache.get();
+        let p = wheel.pos_cached(t, &mut c);
+        wcache.set(c);
+        p
     };
     let y_ref_s = fr.py;
     let tr_ref = geom.rail_t_at(y_ref_s);
@@ -743,15 +752,21 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     out.s0 = s_lo;
     out.ds = (s_hi - s_lo) / T::from_usize(n);
     out.correspondence = corr;
+    // Curve parameters of the deepest sample: the hints of the minimum's refinement below (a
+    // root search walks node by node from its hint; the reference point can be many nodes away).
+    let hint_r = Cell::new(tr_ref);
+    let hint_w = Cell::new(tw_ref);
     match corr {
         Correspondence::Projection => {
             let (mut tr, mut tw) = (tr_ref, tw_ref);
+            let mut best = T::MAX;
+            let (mut rc2, mut wc2) = (SegmentCache::new(), SegmentCache::new());
             for i in 0..n {
                 let s = out.s(i);
                 tr = solve_s(&rpos, &fr, rail.table.len, tr, s).ok_or(Error::NoContact)?;
                 tw = solve_s(&wpos, &fr, wheel.table.len, tw, s).ok_or(Error::NoContact)?;
-                let rp = rail.at(tr);
-                let wp = wheel.at(tw);
+                let rp = rail.at_cached(tr, &mut rc2);
+                let wp = wheel.at_cached(tw, &mut wc2);
                 out.f_n[i] = fr.n(wp.y, wp.z) - fr.n(rp.y, rp.z);
                 out.angle[i] = wp.angle;
                 out.radius[i] = wp.radius;
@@ -760,6 +775,11 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
                 out.width[i] = out.ds;
                 out.y_rail[i] = rp.y;
                 out.x_c[i] = wp.x - frame.x_ref;
+                if i == 0 || out.f_n[i] < best {
+                    best = out.f_n[i];
+                    hint_r.set(tr);
+                    hint_w.set(tw);
+                }
             }
         }
         Correspondence::Isosceles => {
@@ -781,8 +801,10 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     let sep_at = |s: T| -> Option<T> {
         match corr {
             Correspondence::Projection => {
-                let tr = solve_s(&rpos, &fr, rail.table.len, tr_ref, s)?;
-                let tw = solve_s(&wpos, &fr, wheel.table.len, tw_ref, s)?;
+                let tr = solve_s(&rpos, &fr, rail.table.len, hint_r.get(), s)?;
+                let tw = solve_s(&wpos, &fr, wheel.table.len, hint_w.get(), s)?;
+                hint_r.set(tr);
+                hint_w.set(tw);
                 let (rp, wp) = (rpos(tr), wpos(tw));
                 Some(fr.n(wp.0, wp.1) - fr.n(rp.0, rp.1))
             }

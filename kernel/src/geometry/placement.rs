@@ -220,6 +220,17 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         }
     }
 
+    /// Position (y_S, z_S) at parameter `t` (cached), without the angle of [`Self::at_cached`].
+    #[inline]
+    pub fn pos_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
+        let e = self.table.hermite(t, cache);
+        let (qy, qz) = (e.y, -e.z);
+        (
+            qy * self.cos_a - qz * self.sin_a + self.ty,
+            qy * self.sin_a + qz * self.cos_a + self.tz,
+        )
+    }
+
     /// Height z_S of node `i` (exact node value, no interpolation).
     #[inline]
     fn node_z(&self, i: usize) -> T {
@@ -328,7 +339,9 @@ pub struct PlacedWheel<'a, T, const N: usize> {
     cpsi: T,
     spsi: T,
     theta_norm: T,
-    theta0: T,
+    /// sin θ₀, cos θ₀ of θ₀ = atan2(sin φ sin ψ, cos ψ) (precomputed per pose).
+    st0: T,
+    ct0: T,
     /// Lateral position of the wheelset centre in S, mm.
     pub cy: T,
     /// Height of the wheelset centre (axle) in S, mm.
@@ -353,6 +366,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (cphi, sphi) = (math::cos(phi), math::sin(phi));
         let a = cpsi;
         let b = sphi * spsi;
+        let norm = math::hypot(a, b);
         Ok(PlacedWheel {
             table,
             u_off: setup.back_to_back * T::HALF - setup.flange_back_pos,
@@ -361,8 +375,10 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             sphi,
             cpsi,
             spsi,
-            theta_norm: math::hypot(a, b),
-            theta0: math::atan2(b, a),
+            theta_norm: norm,
+            // |ψ| ≤ 0.2 rad (checked), so a = cos ψ > 0.98 and norm > 0
+            st0: b / norm,
+            ct0: a / norm,
             cy: s * pose.dy,
             cz: T::ZERO,
         })
@@ -389,8 +405,27 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         } else {
             -T::ONE
         };
-        let theta = self.theta0 + math::asin(ratio);
-        (math::sin(theta), math::cos(theta))
+        // θ = θ₀ + asin(ratio) without trigonometry: sin(θ₀ + β), cos(θ₀ + β) with
+        // sin β = ratio, cos β = √(1 − ratio²) ≥ 0 (asin's range); |ratio| ≤ 1 above.
+        let cr = math::sqrt(math::max(T::ONE - ratio * ratio, T::ZERO));
+        (
+            self.st0 * cr + self.ct0 * ratio,
+            self.ct0 * cr - self.st0 * ratio,
+        )
+    }
+
+    /// Position (y_S, z_S) of the lowest point for parameter `t` (cached), without the angles
+    /// of [`Self::at_cached`]: what root finding on the placed curve needs.
+    #[inline]
+    pub fn pos_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
+        let e = self.table.hermite(t, cache);
+        let u = e.y + self.u_off;
+        let r = self.r0 + e.z;
+        let (st, ct) = self.lowest(e.tc, e.ts);
+        let x1 = r * st;
+        let y1 = u * self.cphi + r * ct * self.sphi;
+        let z1 = u * self.sphi - r * ct * self.cphi;
+        (x1 * self.spsi + y1 * self.cpsi + self.cy, z1 + self.cz)
     }
 
     /// Lateral position y_S of the lowest point for parameter `t` (root finding; cached).
@@ -734,8 +769,10 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         let (j, _) = self.grid_index(y);
         let (t0, t1) = (self.rail_t[j], self.rail_t[j + 1]);
         let rail = self.rail;
-        let f = |t: T| rail.at(t).y - y;
-        let u = illinois(|u| f(t0 + u * (t1 - t0)), f(t0), f(t1), 40, math::c(1e-11));
+        let mut c = SegmentCache::new();
+        let mut f = |t: T| rail.y_cached(t, &mut c) - y;
+        let (f0, f1) = (f(t0), f(t1));
+        let u = illinois(|u| f(t0 + u * (t1 - t0)), f0, f1, 40, math::c(1e-11));
         t0 + u * (t1 - t0)
     }
 
@@ -744,8 +781,10 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         let (j, _) = self.grid_index(y);
         let (t0, t1) = (self.wheel_t[j], self.wheel_t[j + 1]);
         let wheel = self.wheel;
-        let f = |t: T| wheel.at(t).y - y;
-        let u = illinois(|u| f(t0 + u * (t1 - t0)), f(t0), f(t1), 40, math::c(1e-11));
+        let mut c = SegmentCache::new();
+        let mut f = |t: T| wheel.y_cached(t, &mut c) - y;
+        let (f0, f1) = (f(t0), f(t1));
+        let u = illinois(|u| f(t0 + u * (t1 - t0)), f0, f1, 40, math::c(1e-11));
         t0 + u * (t1 - t0)
     }
 
