@@ -264,6 +264,19 @@ pub fn solve_patch<
     };
     for r in 0..ws.set.n_regions {
         let reg = ws.set.regions[r];
+        // A sliver region of the fine solution (e.g. one sample wide at the edge of the overlap)
+        // can lose its contact in the re-solve on the evenly spaced strips: it carries nothing,
+        // and the rest of the patch is solved as usual (no NoContact for the whole patch).
+        if reg.load <= T::ZERO {
+            res.regions[r] = RegionResult {
+                y_lo: reg.y_lo,
+                y_hi: reg.y_hi,
+                first: reg.first,
+                count: reg.count,
+                ..RegionResult::default()
+            };
+            continue;
+        }
         let patch =
             adapt::region_patch::<T, S, C, SS, NR>(&ws.set, r, &cfg.adapt, mat, &mut ws.local)?;
         let mut rs = RegionSink {
