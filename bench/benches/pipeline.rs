@@ -3,8 +3,9 @@
 //! Run: `cargo bench -p wrc-bench --bench pipeline`.
 //! * `pipeline_f64_hertz_gap`, `pipeline_f64_double_well`: `pipeline::solve_patch` on synthetic
 //!   240-sample gaps (STRIPES + AC + FaStrip + wear).
-//! * `wheel_sweep`: `pipeline::solve_wheel` (patches at the weighted frame, STRIPES fixed point,
-//!   AC, FaStrip, wear; the wheel pre-placed — `WheelRail::place` is timed separately as
+//! * `wheel_sweep`: `wheel::solve_wheel_normal` (normal load of the main patch prescribed:
+//!   patches at the weighted frame, load/approach fixed point, AC, FaStrip, wear; the wheel
+//!   pre-placed — `WheelRail::place` is timed separately as
 //!   `place_0.2mm`) on the S1002/UIC60 sweep (1353/1360, right wheel, dy −3…6, 83.3 kN); the
 //!   per-case median and the maximum over cases are printed after a separate timing loop.
 
@@ -13,10 +14,9 @@ use std::time::Instant;
 use wrc_host_tests::profiles::{self, SmoothOptions};
 use wrc_kernel::geometry::*;
 use wrc_kernel::patch::Creepage;
-use wrc_kernel::pipeline::{
-    solve_patch, solve_wheel, DefaultWheelWorkspace, DefaultWorkspace, PipelineConfig,
-};
+use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
 use wrc_kernel::stripes::StripSample;
+use wrc_kernel::wheel::{solve_wheel_normal, WheelConfig, WheelWorkspace};
 use wrc_kernel::Material;
 
 fn synthetic(two: bool) -> Vec<StripSample<f64>> {
@@ -64,12 +64,8 @@ fn bench(c: &mut Criterion) {
     // Sweep.
     let (w, r) = profiles::manchester_tables::<f64>(&SmoothOptions::default()).unwrap();
     let v = 100.0 / 3.6 * 1000.0;
-    let kin = Kinematics::nominal(v, 460.0);
-    let opts = PatchOptions {
-        samples: 256,
-        ..PatchOptions::default()
-    };
-    let cfg = PipelineConfig::recommended(0.3, v);
+    let mut cfg = WheelConfig::recommended(0.3, v, 460.0);
+    cfg.patches.samples = 256;
     let mut geoms = vec![];
     for b2b in [1353.0, 1360.0] {
         let setup = TrackSetup {
@@ -85,13 +81,11 @@ fn bench(c: &mut Criterion) {
         .iter()
         .map(|(s, p)| WheelRail::<f64, 2048, 2048>::place(&r, &w, s, p, Side::Right, 0.2).unwrap())
         .collect();
-    let mut wws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut wws = Box::new(WheelWorkspace::<f64, 4, 256, 256, 4, 32, 32, 128>::new());
     c.bench_function("wheel_sweep_20_cases", |b| {
         b.iter(|| {
             for g in &placed {
-                black_box(
-                    solve_wheel(g, 83_300.0, &kin, &opts, &mat, &cfg, &mut wws, &mut ()).unwrap(),
-                );
+                black_box(solve_wheel_normal(g, 83_300.0, &mat, &cfg, &mut wws, &mut ()).unwrap());
             }
         })
     });
@@ -105,9 +99,7 @@ fn bench(c: &mut Criterion) {
         let mut t = vec![];
         for _ in 0..31 {
             let t0 = Instant::now();
-            black_box(
-                solve_wheel(g, 83_300.0, &kin, &opts, &mat, &cfg, &mut wws, &mut ()).unwrap(),
-            );
+            black_box(solve_wheel_normal(g, 83_300.0, &mat, &cfg, &mut wws, &mut ()).unwrap());
             t.push(t0.elapsed().as_secs_f64());
         }
         t.sort_by(|a, b| a.partial_cmp(b).unwrap());
@@ -116,7 +108,7 @@ fn bench(c: &mut Criterion) {
     let mut sorted = med.clone();
     sorted.sort_by(|a, b| a.partial_cmp(b).unwrap());
     println!(
-        "solve_wheel per call over the sweep: median of case medians {:.1} µs, max case median {:.1} µs (ratio {:.2})",
+        "solve_wheel_normal per call over the sweep: median of case medians {:.1} µs, max case median {:.1} µs (ratio {:.2})",
         1e6 * sorted[sorted.len() / 2],
         1e6 * sorted[sorted.len() - 1],
         sorted[sorted.len() - 1] / sorted[sorted.len() / 2]

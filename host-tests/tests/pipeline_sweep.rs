@@ -1,4 +1,5 @@
-//! The default wheel pipeline (geometry → STRIPES → AC → FaStrip → wear, `pipeline::solve_wheel`)
+//! The default wheel pipeline (geometry → STRIPES → AC → FaStrip → wear) in its prescribed
+//! normal-load mode (`wheel::solve_wheel_normal`: the main patch carries the normal load)
 //! on the S1002/UIC60 sweep of issue 6: right and left wheel, back-to-back 1353 and 1360 mm,
 //! lateral shift −3…6 mm towards the analysed wheel, yaw 1.2 × shift mrad, equilibrium roll,
 //! loads 40, 83.3 and 120 kN, μ 0.3, E 205.9 GPa, ν 0.28, V = 100 km/h, nominal kinematics.
@@ -12,12 +13,23 @@ use std::fmt::Write as _;
 use wrc_host_tests::profiles::{self, SmoothOptions};
 use wrc_kernel::geometry::*;
 use wrc_kernel::patch::Creepage;
-use wrc_kernel::pipeline::{
-    solve_patch, solve_wheel, DefaultWheelWorkspace, DefaultWorkspace, PipelineConfig,
-};
+use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
 use wrc_kernel::profile::ProfileTable;
 use wrc_kernel::stripes::StripSample;
+use wrc_kernel::wheel::{solve_wheel_normal, WheelConfig, WheelWorkspace};
 use wrc_kernel::{Material, Real};
+
+/// 4 geometry patches of 256 samples, the default pipeline workspace.
+type Ws<T> = WheelWorkspace<T, 4, 256, 256, 4, 32, 32, 128>;
+
+/// The main patch's result and the solver's counts.
+struct Main<T> {
+    patch: wrc_kernel::pipeline::PatchResult<T, 4>,
+    creepage: Creepage<T>,
+    frame: PatchFrame<T>,
+    frame_passes: u32,
+    frame_converged: bool,
+}
 
 struct Res {
     fx: f64,
@@ -41,7 +53,7 @@ fn run<T: Real>(
     pose: &WheelsetPose<f64>,
     side: Side,
     load: f64,
-    ws: &mut DefaultWheelWorkspace<T>,
+    ws: &mut Ws<T>,
 ) -> Res {
     let pose = WheelsetPose {
         dy: T::from_f64(pose.dy),
@@ -52,27 +64,38 @@ fn run<T: Real>(
         WheelRail::<T, 2048, 2048>::place(r, w, setup, &pose, side, T::from_f64(0.05)).unwrap();
     let mat = Material::<T>::steel();
     let v = T::from_f64(100.0 / 3.6 * 1000.0);
-    let cfg = PipelineConfig::recommended(T::from_f64(0.3), v);
-    let opts = PatchOptions {
-        samples: 256,
-        ..PatchOptions::default()
+    let mut cfg = WheelConfig::recommended(T::from_f64(0.3), v, T::from_f64(460.0));
+    cfg.patches.samples = 256;
+    let wres = solve_wheel_normal(&geom, T::from_f64(load), &mat, &cfg, ws, &mut ()).unwrap();
+    assert!(
+        wres.converged,
+        "{} bytes, {:?} {:?} it {} load {}",
+        core::mem::size_of::<T>(),
+        side,
+        pose,
+        wres.iterations,
+        wres.vertical_load.to_f64()
+    );
+    assert_eq!(wres.n, 1);
+    let res = wres.patches[0].unwrap();
+    assert!((res.load.to_f64() / load - 1.0).abs() <= 2.0 * cfg.tol.to_f64());
+    let patches_found = ws.patches.len;
+    let res = Main {
+        patch: res.result,
+        creepage: res.creepage,
+        frame_passes: wres.iterations,
+        frame_converged: wres.converged,
+        frame: res.frame,
     };
-    let kin = Kinematics::nominal(v, T::from_f64(460.0));
-    let res = solve_wheel(
-        &geom,
-        T::from_f64(load),
-        &kin,
-        &opts,
-        &mat,
-        &cfg,
-        ws,
-        &mut (),
-    )
-    .unwrap();
-    assert!(res.patch.converged);
     // The same samples and creepages through the f32 patch pipeline (kernel precision without the
     // f32 geometry).
     let k = ws.patches.main_index().unwrap();
+    assert!(
+        (ws.patches.items[k].frame.y_ref_rail - res.frame.y_ref_rail)
+            .to_f64()
+            .abs()
+            < 1e-9
+    );
     let sm = &ws.patches.items[k].samples;
     let mut st = vec![StripSample::<f32>::default(); sm.n];
     for (i, x) in st.iter_mut().enumerate() {
@@ -82,7 +105,7 @@ fn run<T: Real>(
             z: sm.f_n[i].to_f64() as f32,
             curv_a: sm.a_long[i].to_f64() as f32,
             curv_b: sm.b_lat[i].to_f64() as f32,
-            xc: 0.0,
+            xc: sm.x_c[i].to_f64() as f32,
         };
     }
     let cr = Creepage {
@@ -116,7 +139,7 @@ fn run<T: Real>(
         pmax: res.patch.pmax.to_f64(),
         area: res.patch.area.to_f64(),
         regions: res.patch.n_regions,
-        patches: res.patches_found,
+        patches: patches_found,
         passes: res.frame_passes,
         conv: res.frame_converged,
         pipe32,
@@ -140,8 +163,8 @@ fn full_pipeline_sweep_f32_vs_f64() {
 fn sweep(loads: &[f64], file: &str) {
     let (w, r) = profiles::manchester_tables::<f64>(&SmoothOptions::default()).unwrap();
     let (w32, r32) = profiles::manchester_tables::<f32>(&SmoothOptions::default()).unwrap();
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let mut ws32 = Box::new(DefaultWheelWorkspace::<f32>::new());
+    let mut ws = Box::new(Ws::<f64>::new());
+    let mut ws32 = Box::new(Ws::<f32>::new());
     let mut txt = String::new();
     writeln!(txt, "| b2b | side | dy | N kN | patches | regions | passes | pmax MPa | area mm² | Fx/μN | Fy/μN | Mz N·mm | wear max mm | f32 pipeline ΔF/μN | f32 end-to-end ΔF/μN |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|").unwrap();
     let mut worst = 0.0f64;

@@ -7,9 +7,22 @@
 //! creepages). Output: every contact patch with its frame (reference point, contact angle,
 //! rolling radius), creepages, normal load, STRIPES/tangential results and wear.
 //!
-//! Relation to [`crate::pipeline::solve_wheel`]: that function prescribes the **normal** load of
-//! the main patch and solves only that patch; this one prescribes the **vertical** wheel load,
-//! as a vehicle model knows it, and splits it over every patch.
+//! This is the kernel's one per-wheel pipeline. [`solve_wheel`] prescribes the **vertical** wheel
+//! load, as a vehicle model knows it, and splits it over every patch. [`solve_wheel_normal`] is
+//! the same solver in its second load mode: the **normal** load of the main (heaviest) patch is
+//! prescribed and only that patch is solved (the set-up of seed A and of single-patch studies).
+//!
+//! ## What is precomputed, and what a caller redoes
+//! * Per profile pair (once, when the profiles change): the [`crate::profile::ProfileTable`]s
+//!   (host preprocessing or const data; node positions, tangent angles, curvatures).
+//! * Per wheelset pose and side (once per time step and wheel): [`WheelRail::place`] — placed
+//!   profiles and the vertical gap on the lateral grid. Redo it whenever the pose, the track
+//!   set-up or a profile changes; it borrows the tables, so a profile change needs a new placement.
+//! * Per call (inside [`solve_wheel`]): contact patches at each vertical approach of the load
+//!   loop (reused when the approach does not change: the first pass of every coupling round and
+//!   of the final split), STRIPES, adaptation, FaStrip, wear. The workspace carries nothing
+//!   from one call to the next that changes the result (load guesses are reset per call), so
+//!   calls are deterministic and independent of their order.
 //!
 //! ## Example
 //! ```no_run
@@ -96,7 +109,10 @@ pub struct WheelConfig<T> {
     pub kinematics: Kinematics<T>,
     /// Prescribed creepages for every patch instead of the kinematics (`None`: kinematics).
     pub creepage: Option<Creepage<T>>,
-    /// Relative tolerance on the vertical load and on each patch's approach (default 1e-6).
+    /// Relative tolerance on the vertical load and on each patch's approach (default 1e-6 in
+    /// f64, 1e-3 in f32: f32 geometry resolves track coordinates of ~700 mm to ~5e-5 mm, a few
+    /// 1e-4 of a typical approach, so the load found at a given vertical approach is only that
+    /// repeatable; the old prescribed-normal-load fixed point stopped at 1e-3 on the approach).
     pub tol: T,
 }
 
@@ -112,7 +128,11 @@ impl<T: Real> WheelConfig<T> {
             },
             kinematics: Kinematics::nominal(speed, r0),
             creepage: None,
-            tol: math::c(1e-6),
+            tol: if T::EPSILON < math::c(1e-10) {
+                math::c(1e-6)
+            } else {
+                math::c(1e-3)
+            },
         }
     }
 }
@@ -350,12 +370,16 @@ fn split_load<
     const SS: usize,
 >(
     geom: &WheelRail<'_, T, N, M>,
-    fz: T,
+    target: Target<T>,
     dv_start: T,
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
 ) -> Result<(T, T, u32, bool), Error> {
+    let (fz, main_only) = match target {
+        Target::Vertical(f) => (f, false),
+        Target::MainNormal(n) => (n, true),
+    };
     let mut dv = dv_start;
     let (mut dv0, mut f0) = (T::ZERO, T::ZERO);
     let mut fsum = T::ZERO;
@@ -370,9 +394,14 @@ fn split_load<
         fsum = T::ZERO;
         let mut inner_ok = true;
         let np = ws.patches.len.min(K);
+        let main = ws.patches.main_index();
         for k in 0..np {
             let frame = ws.patches.items[k].frame;
             let a = frame.approach;
+            if main_only && Some(k) != main {
+                ws.loads[k] = T::ZERO;
+                continue;
+            }
             // the previous pass's load of this patch slot is the best first guess
             let guess = if ws.loads[k] > T::ZERO {
                 ws.loads[k]
@@ -389,8 +418,11 @@ fn split_load<
                     ws.solves += it;
                     ws.loads[k] = nk;
                     inner_ok &= ok;
-                    let factor = math::cos(frame.angle) + ws.ratio[k] * ey_z(geom, frame.angle);
-                    fsum += nk * factor;
+                    fsum += if main_only {
+                        nk
+                    } else {
+                        nk * (math::cos(frame.angle) + ws.ratio[k] * ey_z(geom, frame.angle))
+                    };
                 }
                 // a sliver of a patch too small for STRIPES carries no load
                 Err(Error::NoContact) | Err(Error::GridTooSmall(_)) => {}
@@ -414,6 +446,15 @@ fn split_load<
         dv = next;
     }
     Ok((dv, fsum, MAX_OUTER, false))
+}
+
+/// What the load loop balances.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Target<T> {
+    /// Σ_k N_k (cos δ_k + r_k e_y,z) = F_z over all patches.
+    Vertical(T),
+    /// N of the main (heaviest) patch; other patches carry no load and are not solved.
+    MainNormal(T),
 }
 
 /// Solves one wheel: finds δ_v with Σ_k (N_k cos δ_k + F_y,k e_y,z) = `fz` (N), then runs the
@@ -444,7 +485,65 @@ pub fn solve_wheel<
     sink: &mut W,
 ) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(fz, "fz")?;
+    solve(geom, Target::Vertical(fz), mat, cfg, ws, sink)
+}
+
+/// The second load mode of the per-wheel solver: the **normal** load `n` (N) of the main
+/// (heaviest-weight) patch is prescribed; its frame and approach are solved together with the
+/// load (the main patch's STRIPES approach equals its geometric approach at the vertical approach
+/// found), and only that patch is solved (`res.n == 1`; other patches the geometry finds carry no
+/// load — `ws.patches.len` tells how many there were). No normal–tangential coupling (the normal
+/// load is given): `coupling_rounds` is 1. `vertical_load` reports N cos δ of the main patch.
+///
+/// Errors: `NonPositive("N")`, otherwise as [`solve_wheel`].
+#[allow(clippy::too_many_arguments)]
+pub fn solve_wheel_normal<
+    T: Real,
+    W: WheelSink<T>,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    n: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    sink: &mut W,
+) -> Result<WheelResult<T, K, NR>, Error> {
+    check_positive(n, "N")?;
+    solve(geom, Target::MainNormal(n), mat, cfg, ws, sink)
+}
+
+#[allow(clippy::too_many_arguments)]
+fn solve<
+    T: Real,
+    W: WheelSink<T>,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    target: Target<T>,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    sink: &mut W,
+) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(cfg.tol, "tol")?;
+    let main_only = matches!(target, Target::MainNormal(_));
     ws.ratio = [T::ZERO; K];
     ws.loads = [T::ZERO; K];
     ws.solves = 0;
@@ -458,11 +557,16 @@ pub fn solve_wheel<
     let mut rounds = 0;
     for round in 0..MAX_COUPLING {
         rounds = round + 1;
-        let (d, f, p, c) = split_load(geom, fz, dv, mat, cfg, ws)?;
+        let (d, f, p, c) = split_load(geom, target, dv, mat, cfg, ws)?;
         dv = d;
         vload = f;
         passes += p;
         ok = c;
+        if main_only {
+            // the normal load is given: no coupling through the vertical balance
+            coupled = true;
+            break;
+        }
         // tangential forces of every patch at these loads → new ratios
         let mut change = T::ZERO;
         let np = ws.patches.len.min(K);
@@ -492,11 +596,13 @@ pub fn solve_wheel<
         }
     }
     // Final pass at the converged ratios: the load split is consistent with the ratios used.
-    let (d, f, p, c) = split_load(geom, fz, dv, mat, cfg, ws)?;
-    dv = d;
-    vload = if f > T::ZERO { f } else { vload };
-    passes += p;
-    ok &= c;
+    if !main_only {
+        let (d, f, p, c) = split_load(geom, target, dv, mat, cfg, ws)?;
+        dv = d;
+        vload = if f > T::ZERO { f } else { vload };
+        passes += p;
+        ok &= c;
+    }
     let mut res = WheelResult {
         patches: [None; K],
         n: 0,
@@ -540,6 +646,13 @@ pub fn solve_wheel<
     }
     if res.n == 0 {
         return Err(Error::NoContact);
+    }
+    if main_only {
+        res.vertical_load = res.patches[..res.n]
+            .iter()
+            .flatten()
+            .map(|p| p.load * math::cos(p.frame.angle))
+            .fold(T::ZERO, |a, b| a + b);
     }
     Ok(res)
 }
