@@ -108,25 +108,22 @@ impl<T: Real> WheelSink<T> for Stats {
     }
 }
 
-/// Solves a wheel/rail case in precision `T` with `C` cells per strip.
-pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+/// Profiles, track set-up, pose, side, material and kernel configuration of a wheel/rail case.
+pub(crate) struct Prepared<T> {
+    pub(crate) wheel: Box<ProfileTable<T, NODES>>,
+    pub(crate) rail: Box<ProfileTable<T, NODES>>,
+    pub(crate) setup: TrackSetup<T>,
+    pub(crate) pose: WheelsetPose<T>,
+    pub(crate) side: Side,
+    pub(crate) mat: Material<T>,
+    pub(crate) cfg: WheelConfig<T>,
+    pub(crate) speed: f64,
+}
+
+pub(crate) fn prepare<T: Real>(args: &SolveArgs) -> Result<Prepared<T>, String> {
     let cm = &args.common;
     let wr = &args.wr;
     let t = T::from_f64;
-    if cm.tangential == Tangential::Exact {
-        return solve_exact(args, keep);
-    }
-    match cm.normal.unwrap_or(Normal::Stripes) {
-        Normal::Stripes => {}
-        other => {
-            return Err(format!(
-            "--normal {other:?} is not available for wheel/rail cases in this build (stripes is)"
-        ))
-        }
-    }
-    if cm.strips < 8 || cm.strips > 32 {
-        return Err("--strips per region must be within 8..=32 for wheel/rail cases".into());
-    }
     let (dw, dr) = default_profiles();
     let wheel = table::<T>(wr.wheel.as_deref().unwrap_or(&dw), ProfileKind::Wheel)?;
     let rail = table::<T>(wr.rail.as_deref().unwrap_or(&dr), ProfileKind::Rail)?;
@@ -147,23 +144,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         t(mirror * wr.yaw * 1e-3),
         t(wr.roll * 1e-3),
     );
-    let geom = WheelRail::<T, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, t(0.05))
-        .map_err(|e| format!("geometry: {e}"))?;
     let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
     let speed = cm.speed * 1e3;
     let mut cfg = WheelConfig::recommended(t(cm.mu), t(speed), t(wr.r0));
-    cfg.pipeline.strips_per_region = cm.strips;
-    cfg.pipeline.method = match cm.tangential {
-        Tangential::Fastsim => Method::Fastsim,
-        Tangential::Fastrip => Method::Fastrip,
-        Tangential::Exact => unreachable!("handled by solve_exact"),
-    };
-    cfg.pipeline.adapt = match cm.flex.unwrap_or(Flex::Ac) {
-        Flex::Hertz => Adaptation::Hertz,
-        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
-        Flex::Linder => Adaptation::Linder,
-        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
-    };
     cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
         (None, None, None) => None,
         (Some(xi), Some(eta), Some(phi)) => Some(Creepage {
@@ -173,8 +156,64 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         }),
         _ => return Err("give all of --xi, --eta, --phi or none (kinematic creepages)".into()),
     };
+    Ok(Prepared {
+        wheel,
+        rail,
+        setup,
+        pose,
+        side,
+        mat,
+        cfg,
+        speed,
+    })
+}
+
+/// The flexibility approach of `--flex` (default Ayasse–Chollet).
+pub(crate) fn adaptation<T: Real>(flex: Option<Flex>) -> Adaptation<T> {
+    match flex.unwrap_or(Flex::Ac) {
+        Flex::Hertz => Adaptation::Hertz,
+        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
+        Flex::Linder => Adaptation::Linder,
+        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
+    }
+}
+
+/// Solves a wheel/rail case in precision `T` with `C` cells per strip.
+pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+    let cm = &args.common;
+    let t = T::from_f64;
+    if cm.tangential == Tangential::Exact {
+        return solve_exact(args, keep);
+    }
+    match cm.normal.unwrap_or(Normal::Stripes) {
+        Normal::Stripes => {}
+        Normal::Norm => return crate::wr_reference::solve_norm::<T>(args, keep),
+        Normal::Hertz => return crate::wr_reference::solve_hertz::<T, C>(args, keep),
+    }
+    if cm.strips < 8 || cm.strips > 32 {
+        return Err("--strips per region must be within 8..=32 for wheel/rail cases".into());
+    }
+    let Prepared {
+        wheel,
+        rail,
+        setup,
+        pose,
+        side,
+        mat,
+        mut cfg,
+        speed,
+    } = prepare::<T>(args)?;
+    let geom = WheelRail::<T, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, t(0.05))
+        .map_err(|e| format!("geometry: {e}"))?;
+    cfg.pipeline.strips_per_region = cm.strips;
+    cfg.pipeline.method = match cm.tangential {
+        Tangential::Fastsim => Method::Fastsim,
+        Tangential::Fastrip => Method::Fastrip,
+        Tangential::Exact => unreachable!("handled by solve_exact"),
+    };
+    cfg.pipeline.adapt = adaptation(cm.flex);
     let mut ws = Box::new(WheelWorkspace::<T, 4, 128, 256, 4, 32, C, 128>::new());
-    let fz = t(wr.fz);
+    let fz = t(args.wr.fz);
     let time_us = median_time_us(|| {
         let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
     });
@@ -267,44 +306,19 @@ fn solve_exact(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
     use wrc_host_tests::tangstudy::reference;
     use wrc_host_tests::wheelrail::{solve_case, NormGridOptions};
     let cm = &args.common;
-    let wr = &args.wr;
     if cm.normal.unwrap_or(Normal::Norm) != Normal::Norm {
         return Err(
             "--tangential exact runs on NORM pressure: use --normal norm (or omit it)".into(),
         );
     }
-    let (dw, dr) = default_profiles();
-    let wheel = table::<f64>(wr.wheel.as_deref().unwrap_or(&dw), ProfileKind::Wheel)?;
-    let rail = table::<f64>(wr.rail.as_deref().unwrap_or(&dr), ProfileKind::Rail)?;
-    let mut setup = TrackSetup::<f64>::standard();
-    setup.gauge = wr.gauge;
-    setup.gauge_depth = wr.gauge_depth;
-    setup.back_to_back = wr.back_to_back.unwrap_or(1360.0);
-    setup.cant = wr.cant;
-    setup.r0 = wr.r0;
-    let (side, mirror) = match wr.side {
-        ArgSide::Left => (Side::Left, -1.0),
-        ArgSide::Right => (Side::Right, 1.0),
-    };
-    let pose = WheelsetPose::from_contact(mirror * wr.dy, mirror * wr.yaw * 1e-3, wr.roll * 1e-3);
-    let geom = WheelRail::<f64, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, 0.05)
-        .map_err(|e| format!("geometry: {e}"))?;
-    let mat = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(|e| e.to_string())?;
-    let speed = cm.speed * 1e3;
-    let mut cfg = WheelConfig::recommended(cm.mu, speed, wr.r0);
-    cfg.pipeline.adapt = match cm.flex.unwrap_or(Flex::Ac) {
-        Flex::Hertz => Adaptation::Hertz,
-        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
-        Flex::Linder => Adaptation::Linder,
-        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
-    };
-    cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
-        (None, None, None) => None,
-        (Some(xi), Some(eta), Some(phi)) => Some(Creepage { xi, eta, phi }),
-        _ => return Err("give all of --xi, --eta, --phi or none (kinematic creepages)".into()),
-    };
+    let p = prepare::<f64>(args)?;
+    let geom =
+        WheelRail::<f64, NODES, NODES>::place(&p.rail, &p.wheel, &p.setup, &p.pose, p.side, 0.05)
+            .map_err(|e| format!("geometry: {e}"))?;
+    let (mat, mut cfg, speed) = (p.mat, p.cfg, p.speed);
+    cfg.pipeline.adapt = adaptation(cm.flex);
     let t0 = std::time::Instant::now();
-    let cs = solve_case(&geom, wr.fz, &mat, &cfg, &NormGridOptions::default())
+    let cs = solve_case(&geom, args.wr.fz, &mat, &cfg, &NormGridOptions::default())
         .map_err(|e| e.to_string())?;
     let mut patches = vec![];
     let mut cells = vec![];
