@@ -11,5 +11,6 @@ pub mod norm;
 pub mod profiles;
 pub mod table;
 pub mod tang;
+pub mod tangstudy;
 pub mod wear_ref;
 pub mod wheelrail;
