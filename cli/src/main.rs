@@ -9,6 +9,7 @@ mod sink;
 mod sweep;
 mod timing;
 mod wheelrail;
+mod wr_reference;
 
 use args::{Cli, Command, Precision, SolveArgs};
 use clap::Parser;

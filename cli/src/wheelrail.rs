@@ -108,22 +108,22 @@ impl<T: Real> WheelSink<T> for Stats {
     }
 }
 
-/// Solves a wheel/rail case in precision `T` with `C` cells per strip.
-pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+/// Profiles, track set-up, pose, side, material and kernel configuration of a wheel/rail case.
+pub(crate) struct Prepared<T> {
+    pub(crate) wheel: Box<ProfileTable<T, NODES>>,
+    pub(crate) rail: Box<ProfileTable<T, NODES>>,
+    pub(crate) setup: TrackSetup<T>,
+    pub(crate) pose: WheelsetPose<T>,
+    pub(crate) side: Side,
+    pub(crate) mat: Material<T>,
+    pub(crate) cfg: WheelConfig<T>,
+    pub(crate) speed: f64,
+}
+
+pub(crate) fn prepare<T: Real>(args: &SolveArgs) -> Result<Prepared<T>, String> {
     let cm = &args.common;
     let wr = &args.wr;
     let t = T::from_f64;
-    match cm.normal.unwrap_or(Normal::Stripes) {
-        Normal::Stripes => {}
-        other => {
-            return Err(format!(
-            "--normal {other:?} is not available for wheel/rail cases in this build (stripes is)"
-        ))
-        }
-    }
-    if cm.strips < 8 || cm.strips > 32 {
-        return Err("--strips per region must be within 8..=32 for wheel/rail cases".into());
-    }
     let (dw, dr) = default_profiles();
     let wheel = table::<T>(wr.wheel.as_deref().unwrap_or(&dw), ProfileKind::Wheel)?;
     let rail = table::<T>(wr.rail.as_deref().unwrap_or(&dr), ProfileKind::Rail)?;
@@ -144,11 +144,64 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         t(mirror * wr.yaw * 1e-3),
         t(wr.roll * 1e-3),
     );
-    let geom = WheelRail::<T, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, t(0.05))
-        .map_err(|e| format!("geometry: {e}"))?;
     let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
     let speed = cm.speed * 1e3;
     let mut cfg = WheelConfig::recommended(t(cm.mu), t(speed), t(wr.r0));
+    cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
+        (None, None, None) => None,
+        (Some(xi), Some(eta), Some(phi)) => Some(Creepage {
+            xi: t(xi),
+            eta: t(eta),
+            phi: t(phi),
+        }),
+        _ => return Err("give all of --xi, --eta, --phi or none (kinematic creepages)".into()),
+    };
+    Ok(Prepared {
+        wheel,
+        rail,
+        setup,
+        pose,
+        side,
+        mat,
+        cfg,
+        speed,
+    })
+}
+
+/// The flexibility approach of `--flex` (default Ayasse–Chollet).
+pub(crate) fn adaptation<T: Real>(flex: Option<Flex>) -> Adaptation<T> {
+    match flex.unwrap_or(Flex::Ac) {
+        Flex::Hertz => Adaptation::Hertz,
+        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
+        Flex::Linder => Adaptation::Linder,
+        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
+    }
+}
+
+/// Solves a wheel/rail case in precision `T` with `C` cells per strip.
+pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+    let cm = &args.common;
+    let t = T::from_f64;
+    match cm.normal.unwrap_or(Normal::Stripes) {
+        Normal::Stripes => {}
+        Normal::Norm => return crate::wr_reference::solve_norm::<T>(args, keep),
+        Normal::Hertz => return crate::wr_reference::solve_hertz::<T, C>(args, keep),
+    }
+    if cm.strips < 8 || cm.strips > 32 {
+        return Err("--strips per region must be within 8..=32 for wheel/rail cases".into());
+    }
+    let Prepared {
+        wheel,
+        rail,
+        setup,
+        pose,
+        side,
+        mat,
+        mut cfg,
+        speed,
+    } = prepare::<T>(args)?;
+    let geom = WheelRail::<T, NODES, NODES>::place(&rail, &wheel, &setup, &pose, side, t(0.05))
+        .map_err(|e| format!("geometry: {e}"))?;
     cfg.pipeline.strips_per_region = cm.strips;
     cfg.pipeline.method = match cm.tangential {
         Tangential::Fastsim => Method::Fastsim,
@@ -159,23 +212,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
             )
         }
     };
-    cfg.pipeline.adapt = match cm.flex.unwrap_or(Flex::Ac) {
-        Flex::Hertz => Adaptation::Hertz,
-        Flex::Kp => Adaptation::KikPiotrowski(KpBeta::LOverW),
-        Flex::Linder => Adaptation::Linder,
-        Flex::Ac => Adaptation::AyasseChollet(AcFlexLength::StripA),
-    };
-    cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
-        (None, None, None) => None,
-        (Some(xi), Some(eta), Some(phi)) => Some(Creepage {
-            xi: t(xi),
-            eta: t(eta),
-            phi: t(phi),
-        }),
-        _ => return Err("give all of --xi, --eta, --phi or none (kinematic creepages)".into()),
-    };
+    cfg.pipeline.adapt = adaptation(cm.flex);
     let mut ws = Box::new(WheelWorkspace::<T, 4, 128, 256, 4, 32, C, 128>::new());
-    let fz = t(wr.fz);
+    let fz = t(args.wr.fz);
     let time_us = median_time_us(|| {
         let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
     });

@@ -48,16 +48,17 @@ use crate::data::shared_file;
 use crate::norm::{self, Control, Grid, NormSolution};
 use crate::profiles::{self, SmoothOptions};
 use std::path::Path;
+use wrc_kernel::adapt::{self, Adaptation, LocalEllipse, Method};
 use wrc_kernel::geometry::{
     contact_patches, equilibrium_roll, Patch, PatchFrame, PatchOptions, Patches, Side, TrackSetup,
     WheelRail, WheelsetPose,
 };
-use wrc_kernel::patch::Creepage;
+use wrc_kernel::patch::{CellPressure, CellSink, Creepage, Strip, StripPatch};
 use wrc_kernel::pipeline::PatchResult;
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::stripes::StripSample;
+use wrc_kernel::stripes::{boussinesq_filter, StripSample};
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig, WheelResult};
-use wrc_kernel::{Error, Material};
+use wrc_kernel::{Error, Material, Real};
 
 /// Profile-table capacity used by the sweep (nodes).
 pub const NODES: usize = 2048;
@@ -678,19 +679,36 @@ fn same_frame(a: &PatchFrame<f64>, b: &PatchFrame<f64>) -> bool {
         && (a.approach - b.approach).abs() <= 1e-12
 }
 
-/// The kernel's wheel solve (f64, `cfg`) on a placed wheel with vertical load `fz` (N), then NORM
-/// on every patch it reports, load-controlled to that patch's normal load (module docs).
+/// One patch of the kernel's wheel solve with its gap (no NORM): see [`solve_kernel_case`].
+#[derive(Clone, Debug)]
+pub struct KernelPatch {
+    /// The kernel's frame of the patch.
+    pub frame: PatchFrame<f64>,
+    /// Creepages the kernel used.
+    pub creepage: Creepage<f64>,
+    /// Patch normal load of the kernel's load split, N.
+    pub load: f64,
+    /// The kernel's pipeline result.
+    pub kernel: PatchResult<f64, REGIONS>,
+    /// The STRIPES input the kernel used.
+    pub stripes_samples: Vec<StripSample<f64>>,
+    /// The patch's gap re-evaluated with [`GAP_SAMPLES`] samples at the solved approach.
+    pub gap: Vec<GapSample>,
+}
+
+/// The kernel's wheel solve (f64, `cfg`) on a placed wheel with vertical load `fz` (N), and for
+/// every patch it reports: the kernel's STRIPES samples and the gap re-evaluated with
+/// [`GAP_SAMPLES`] samples at the solved vertical approach (module docs).
 ///
-/// Errors: the kernel's errors; `NotConverged`-like failures of the kernel are not errors (the
-/// flag is in `wheel.converged`); NORM errors; `OutOfRange("frame")` if a recomputed patch frame
-/// does not match the kernel's (the kernel's last geometry pass was not at its returned approach).
-pub fn solve_case(
+/// Errors: the kernel's errors (a non-converged kernel result is not an error: the flag is in the
+/// returned `WheelResult::converged`); `OutOfRange("frame")` if a recomputed patch frame does not
+/// match the kernel's (the kernel's last geometry pass was not at its returned approach).
+pub fn solve_kernel_case(
     geom: &WheelRail<'_, f64, NODES, NODES>,
     fz: f64,
     mat: &Material<f64>,
     cfg: &WheelConfig<f64>,
-    norm_opts: &NormGridOptions,
-) -> Result<CaseSolution, Error> {
+) -> Result<(WheelResult<f64, PATCHES, REGIONS>, Vec<KernelPatch>), Error> {
     let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     let wheel = solve_wheel(geom, fz, mat, cfg, &mut ws, &mut ())?;
     // the kernel's STRIPES samples of the final geometry pass, by frame
@@ -731,20 +749,248 @@ pub fn solve_case(
             .find(|(f, _)| same_frame(f, &wp.frame))
             .map(|(_, v)| v.clone())
             .ok_or(Error::OutOfRange("frame"))?;
-        let gap = gap_samples(fp);
-        let (grid, sol) = norm_on_gap(&gap, wp.load, wp.frame.approach, mat, norm_opts)?;
-        patches.push(PatchCase {
+        patches.push(KernelPatch {
             frame: wp.frame,
             creepage: wp.creepage,
             load: wp.load,
             kernel: wp.result,
             stripes_samples,
-            gap,
+            gap: gap_samples(fp),
+        });
+    }
+    Ok((wheel, patches))
+}
+
+/// The kernel's wheel solve (f64, `cfg`) on a placed wheel with vertical load `fz` (N), then NORM
+/// on every patch it reports, load-controlled to that patch's normal load (module docs).
+///
+/// Errors: those of [`solve_kernel_case`] and of [`norm_on_gap`].
+pub fn solve_case(
+    geom: &WheelRail<'_, f64, NODES, NODES>,
+    fz: f64,
+    mat: &Material<f64>,
+    cfg: &WheelConfig<f64>,
+    norm_opts: &NormGridOptions,
+) -> Result<CaseSolution, Error> {
+    let (wheel, kps) = solve_kernel_case(geom, fz, mat, cfg)?;
+    let mut patches = vec![];
+    for kp in kps {
+        let (grid, sol) = norm_on_gap(&kp.gap, kp.load, kp.frame.approach, mat, norm_opts)?;
+        patches.push(PatchCase {
+            frame: kp.frame,
+            creepage: kp.creepage,
+            load: kp.load,
+            kernel: kp.kernel,
+            stripes_samples: kp.stripes_samples,
+            gap: kp.gap,
             grid,
             norm: sol,
         });
     }
     Ok(CaseSolution { wheel, patches })
+}
+
+/// Interpolated gap sample (f_n cubic, A, B, x_c linear) at lateral position `s`, e.g. the
+/// patch's reference point s = 0 for a Hertz ellipse.
+pub fn gap_sample_at(sm: &[GapSample], s: f64) -> GapSample {
+    let (f_n, a_long, x_c) = interp(sm, s);
+    let b_lat = if sm.is_empty() {
+        0.0
+    } else if s <= sm[0].s {
+        sm[0].b_lat
+    } else if s >= sm[sm.len() - 1].s {
+        sm[sm.len() - 1].b_lat
+    } else {
+        let i = sm
+            .partition_point(|p| p.s <= s)
+            .saturating_sub(1)
+            .min(sm.len() - 2);
+        let t = (s - sm[i].s) / (sm[i + 1].s - sm[i].s);
+        sm[i].b_lat + t * (sm[i + 1].b_lat - sm[i].b_lat)
+    };
+    GapSample {
+        s,
+        f_n,
+        a_long,
+        b_lat,
+        x_c,
+    }
+}
+
+/// Strip capacity of [`tangential_on_norm`] (NORM rows with contact, runs counted separately).
+pub const NORM_STRIPS: usize = 256;
+/// Cell capacity of [`tangential_on_norm`] (NORM columns).
+pub const NORM_CELLS: usize = 256;
+
+/// Regions of a NORM solution: maximal runs of consecutive grid rows with contact, as (first row,
+/// last row).
+pub fn norm_row_regions(sol: &NormSolution) -> Vec<(usize, usize)> {
+    let mut out = vec![];
+    let mut start: Option<usize> = None;
+    for j in 0..sol.grid.my {
+        let on = sol.strips.get(j).is_some_and(|s| !s.runs.is_empty());
+        match (on, start) {
+            (true, None) => start = Some(j),
+            (false, Some(s)) => {
+                out.push((s, j - 1));
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push((s, sol.grid.my - 1));
+    }
+    out
+}
+
+/// Totals of [`tangential_on_norm`], kernel precision converted to f64.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct NormTangential {
+    /// F_x on the wheel, patch frame, N.
+    pub fx: f64,
+    /// F_y on the wheel, patch frame, N.
+    pub fy: f64,
+    /// M_z about the patch frame origin, N·mm.
+    pub mz: f64,
+    /// Normal force seen by the tangential solver (Σ p δxδy), N.
+    pub fn_: f64,
+    /// Regions (row runs of NORM's contact set).
+    pub regions: usize,
+}
+
+/// The kernel's FASTSIM or FaStrip (`method`) with the flexibility approach `adapt` on NORM's
+/// pressure of one patch, in precision `T`: each NORM row region becomes one kernel strip patch
+/// (one strip per grid row and contact run, the NORM element pressures as cell pressures, cells =
+/// NORM columns); Ayasse–Chollet's local ellipses come from the patch's gap curvatures (A, B)
+/// with B filtered by the §5.3 filter of length 0.25 × the region's half-width (the kernel's
+/// `PatchFraction(0.25)` on STRIPES) and clamped to ≥ 1e-6 1/mm. FASTSIM uses the approach's
+/// default bound ([`Adaptation::default_bound`]), FaStrip its defaults. `sink_for(region)` gives
+/// the cell sink of each region (strip indices restart at 0 in every region).
+///
+/// Errors: `OutOfRange` if the NORM grid exceeds [`NORM_STRIPS`] × [`NORM_CELLS`]; the kernel's.
+#[allow(clippy::too_many_arguments)]
+pub fn tangential_on_norm<T: Real, K: CellSink<T>>(
+    norm: &NormSolution,
+    gap: &[GapSample],
+    creepage: &Creepage<f64>,
+    mat: &Material<f64>,
+    adapt: &Adaptation<T>,
+    method: Method,
+    mu: f64,
+    mut sink_for: impl FnMut(usize) -> K,
+) -> Result<(NormTangential, Vec<K>), Error> {
+    let t = T::from_f64;
+    let g = &norm.grid;
+    if g.mx > NORM_CELLS {
+        return Err(Error::OutOfRange("NORM grid columns exceed NORM_CELLS"));
+    }
+    let matt = Material {
+        g: t(mat.g),
+        nu: t(mat.nu),
+        e_star: t(mat.e_star),
+    };
+    let cr = Creepage {
+        xi: t(creepage.xi),
+        eta: t(creepage.eta),
+        phi: t(creepage.phi),
+    };
+    let mut pn: Box<[[T; NORM_CELLS]; NORM_STRIPS]> = vec![[T::ZERO; NORM_CELLS]; NORM_STRIPS]
+        .into_boxed_slice()
+        .try_into()
+        .map_err(|_| Error::OutOfRange("capacity"))?;
+    let bound = adapt.default_bound();
+    let mut out = NormTangential::default();
+    let mut sinks = vec![];
+    // gap arrays for the AC curvature filter
+    let gs: Vec<f64> = gap.iter().map(|p| p.s).collect();
+    let gb: Vec<f64> = gap.iter().map(|p| p.b_lat).collect();
+    for (k, (r0, r1)) in norm_row_regions(norm).into_iter().enumerate() {
+        let mut strips = [Strip::<T>::default(); NORM_STRIPS];
+        let mut ys = vec![];
+        let mut n = 0;
+        for j in r0..=r1 {
+            for run in &norm.strips[j].runs {
+                if n >= NORM_STRIPS {
+                    return Err(Error::OutOfRange("NORM strips exceed NORM_STRIPS"));
+                }
+                let a = 0.5 * (run.x_lead - run.x_trail);
+                strips[n] = Strip {
+                    y: t(g.y(j)),
+                    dy: t(g.dy),
+                    a: t(a),
+                    xc: t(0.5 * (run.x_lead + run.x_trail)),
+                    p_hat: t(2.0 * run.force_per_width / (std::f64::consts::PI * a)),
+                    ..Strip::default()
+                };
+                for (i, v) in pn[n].iter_mut().enumerate() {
+                    *v = if i >= run.i_first && i <= run.i_last && i < g.mx {
+                        t(norm.p(i, j).max(0.0))
+                    } else {
+                        T::ZERO
+                    };
+                }
+                ys.push(g.y(j));
+                n += 1;
+            }
+        }
+        for s in strips.iter_mut().skip(n) {
+            s.dy = t(g.dy);
+        }
+        for row in pn.iter_mut().skip(n) {
+            row.iter_mut().for_each(|v| *v = T::ZERO);
+        }
+        let (y_lo, y_hi) = (g.y(r0) - 0.5 * g.dy, g.y(r1) + 0.5 * g.dy);
+        let local: Vec<LocalEllipse<T>> = match adapt {
+            Adaptation::AyasseChollet(_) => {
+                let mut bf = vec![0.0; gs.len()];
+                boussinesq_filter(&gs, &gb, 0.25 * 0.5 * (y_hi - y_lo), &mut bf);
+                let filtered: Vec<GapSample> = gap
+                    .iter()
+                    .zip(&bf)
+                    .map(|(p, b)| GapSample { b_lat: *b, ..*p })
+                    .collect();
+                ys.iter()
+                    .map(|&y| {
+                        let q = gap_sample_at(&filtered, y);
+                        let bb = q.b_lat.max(1e-6);
+                        let h = wrc_kernel::hertz::coefficients(q.a_long, bb)?;
+                        let nm = h.n / h.m;
+                        Ok(LocalEllipse {
+                            n_over_m: t(nm),
+                            a_tilde: t(nm * nm * bb),
+                        })
+                    })
+                    .collect::<Result<_, Error>>()?
+            }
+            _ => vec![],
+        };
+        let mut patch = StripPatch::<T, NORM_STRIPS, NORM_CELLS> {
+            strips,
+            x0: t(g.x0),
+            dx: t(g.dx),
+            mat: matt,
+        };
+        adapt::apply(&mut patch, n, t(y_lo), t(y_hi), &local, adapt)?;
+        patch.validate()?;
+        let mut sink = sink_for(k);
+        let r = adapt::solve_tangential(
+            &patch,
+            &CellPressure(&pn),
+            &cr,
+            method,
+            bound,
+            t(mu),
+            &mut sink,
+        )?;
+        sinks.push(sink);
+        out.fx += r.total.fx.to_f64();
+        out.fy += r.total.fy.to_f64();
+        out.mz += r.total.mz.to_f64();
+        out.fn_ += r.total.fn_.to_f64();
+        out.regions += 1;
+    }
+    Ok((out, sinks))
 }
 
 /// [`solve_case`] for a sweep case (steel, the sweep's configuration).
