@@ -11,10 +11,16 @@
 //! Asserted: all three within 2 % (issue 4) on the left wheel and on the right wheel up to
 //! y_ws = 4.5 mm (33 tread cases; worst 1.7 %). On the right wheel from y_ws = 5 mm (flange-root /
 //! flange contact, contact angles 0.29–1.06 rad) approach and pmax stay within 2 % except at the
-//! jump y_ws = 5 mm (§10.9 marks it), but the area is 4–9 % below CONTACT's for y_ws ≥ 6.5 mm: NORM
-//! itself is the same solver, so this measures the difference between the kernel's projected gap on
-//! a steep, curved flange patch and CONTACT's planar contact; not asserted, printed, and reported as
-//! an open item (not a tolerance chosen to pass).
+//! jump y_ws = 5 mm (§10.9 marks it), but the area is 4–9 % below CONTACT's for y_ws ≥ 6.5 mm.
+//! Cause (test `flange_area_is_limited_by_the_grid_phase`): those flange patches are only
+//! 0.7–0.8 mm wide laterally and ≈ 14 mm long, i.e. 4–5 element rows at 0.2 mm, one row being
+//! ≈ 30 % of the area; the element-count area then depends on where the rows fall relative to
+//! the patch edges. Shifting NORM's grid by a fraction of an element in s moves its area by up to
+//! ±8 % (y_ws = 7: −7.6 % … +5.8 %) and pmax by ≈ 5 %; CONTACT's value lies inside NORM's range
+//! over the grid phases in every flange case, and NORM's pmax converges to within 2.6 % of
+//! CONTACT's under refinement (0.05 mm). So the gap is the resolution of a 0.2 mm element-count
+//! area on a 4-row patch (CONTACT's own number carries the same uncertainty), not a geometry
+//! error; the flange areas are therefore printed, not asserted at 2 %.
 //!
 //! `cargo test -p wrc-host-tests --release --test norm_mbench -- --nocapture` prints the table.
 
@@ -136,4 +142,62 @@ fn norm_against_contact_mbench() {
         100.0 * worst[2]
     );
     assert!(fails.is_empty(), "beyond 2 %: {fails:?}");
+}
+
+/// The flange cases (right wheel, y_ws ≥ 6.5 mm) at CONTACT's element size 0.2 mm, with the grid
+/// shifted laterally by 0, ¼, ½ and ¾ element: CONTACT's element-count area lies inside the range
+/// of NORM's areas over the phases (the 4–9 % "gap" of the main test is the grid phase of a patch
+/// 4–5 rows wide), and that range is wide (> 8 % of the area) in every case.
+#[test]
+fn flange_area_is_limited_by_the_grid_phase() {
+    use wrc_host_tests::wheelrail::{gap_at, GapSample};
+    let (w, r) = profiles::manchester_tables::<f64>(&SmoothOptions::default()).unwrap();
+    let mat = Material::from_g_nu(82_000.0, 0.28).unwrap();
+    let d = 0.2;
+    for row in rows()
+        .into_iter()
+        .filter(|r| r.side == Side::Right && r.y_ws >= 6.5)
+    {
+        let sm: Vec<GapSample> = samples(&w, &r, &row)
+            .into_iter()
+            .map(|(s, f_n, a_long, x_c)| GapSample {
+                s,
+                f_n,
+                a_long,
+                b_lat: 0.0,
+                x_c,
+            })
+            .collect();
+        let lvl = 1.3 * row.approach;
+        let inside: Vec<&GapSample> = sm.iter().filter(|p| p.f_n < lvl).collect();
+        let (ylo, yhi) = (inside[0].s - 3.0 * d, inside[inside.len() - 1].s + 3.0 * d);
+        let hx = inside
+            .iter()
+            .map(|p| ((lvl - p.f_n) / p.a_long).sqrt() + p.x_c.abs())
+            .fold(0.0, f64::max)
+            + 2.0 * d;
+        let (mx, my) = (
+            (2.0 * hx / d).ceil() as usize,
+            ((yhi - ylo) / d).ceil() as usize,
+        );
+        let mut areas = vec![];
+        for phase in [0.0, 0.25, 0.5, 0.75] {
+            let grid = Grid::centred(mx, my, d, d, 0.0, 0.5 * (ylo + yhi) + phase * d).unwrap();
+            let h = grid.sample(|x, y| gap_at(&sm, x, y));
+            let s = solve(&grid, &h, &mat, Control::Load(row.fn_), &Options::default()).unwrap();
+            assert!(s.converged && !s.touches_boundary);
+            areas.push(s.area);
+        }
+        let lo = areas.iter().cloned().fold(f64::MAX, f64::min);
+        let hi = areas.iter().cloned().fold(0.0, f64::max);
+        println!(
+            "y_ws {}: CONTACT {:.2}, NORM over the phases {:.2} … {:.2} mm²",
+            row.y_ws,
+            row.area(),
+            lo,
+            hi
+        );
+        assert!(lo <= row.area() && row.area() <= hi, "y_ws {}", row.y_ws);
+        assert!(hi / lo - 1.0 > 0.08, "y_ws {}", row.y_ws);
+    }
 }
