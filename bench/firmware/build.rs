@@ -13,9 +13,11 @@ fn main() {
     println!("cargo:rerun-if-changed={}", root.join("memory.x").display());
     let expected = manifest.join("src").join("expected.rs");
     println!("cargo:rerun-if-changed={}", expected.display());
-    if !expected.is_file() {
+    let profiles = manifest.join("src").join("profiles.rs");
+    println!("cargo:rerun-if-changed={}", profiles.display());
+    if !expected.is_file() || !profiles.is_file() {
         panic!(
-            "{} is missing: generate it on the host with \
+            "{} or profiles.rs is missing: generate them on the host with \
              `cargo run -p wrc-bench --release --bin firmware-expected` (as .ci/run does)",
             expected.display()
         );

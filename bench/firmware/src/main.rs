@@ -23,6 +23,30 @@ mod expected {
     include!("expected.rs");
 }
 
+/// The S1002/UIC60 tables as const data (flash), generated with `expected.rs`.
+#[allow(clippy::all)]
+mod profiles {
+    include!("profiles.rs");
+}
+
+impl cases::WheelProfiles for f32 {
+    fn tables() -> (
+        &'static wrc_kernel::profile::ProfileTable<f32, { cases::PROFILE_NODES }>,
+        &'static wrc_kernel::profile::ProfileTable<f32, { cases::PROFILE_NODES }>,
+    ) {
+        (&profiles::WHEEL_F32, &profiles::RAIL_F32)
+    }
+}
+
+impl cases::WheelProfiles for f64 {
+    fn tables() -> (
+        &'static wrc_kernel::profile::ProfileTable<f64, { cases::PROFILE_NODES }>,
+        &'static wrc_kernel::profile::ProfileTable<f64, { cases::PROFILE_NODES }>,
+    ) {
+        (&profiles::WHEEL_F64, &profiles::RAIL_F64)
+    }
+}
+
 use core::fmt::Write as _;
 
 use cortex_m_rt::{entry, exception, ExceptionFrame};
@@ -124,7 +148,7 @@ fn report(t: &mut Tally, what: &str, case: &str, c: &Cmp, n: usize, want_n: usiz
     );
 }
 
-fn run_precision<T: Real>(
+fn run_precision<T: Real + cases::WheelProfiles>(
     t: &mut Tally,
     m: &mut TargetMeter,
     label: &'static str,
@@ -210,6 +234,16 @@ fn main() -> ! {
         BOARD,
         et,
         es
+    );
+    use core::mem::size_of;
+    hprintln!(
+        "== wheel cases: profile tables {} B (f32) / {} B (f64) each in flash; workspace {} B (f32) / {} B (f64); placed wheel (gap grid) {} B (f32) / {} B (f64)",
+        size_of::<wrc_kernel::profile::ProfileTable<f32, { cases::PROFILE_NODES }>>(),
+        size_of::<wrc_kernel::profile::ProfileTable<f64, { cases::PROFILE_NODES }>>(),
+        size_of::<cases::WheelWs<f32>>(),
+        size_of::<cases::WheelWs<f64>>(),
+        size_of::<cases::Placed<'static, f32>>(),
+        size_of::<cases::Placed<'static, f64>>()
     );
     let mut t = Tally::default();
     if expected::NAMES != NAMES {

@@ -10,6 +10,9 @@
 
 use core::hint::black_box;
 use core::ptr::{addr_of, read_volatile, write_volatile};
+use core::sync::atomic::{AtomicU32, Ordering};
+
+use cortex_m_rt::exception;
 
 use cortex_m_semihosting::hprintln;
 
@@ -18,33 +21,61 @@ use crate::cases::Meter;
 const TIMER0_CTRL: *mut u32 = 0x4000_0000 as *mut u32;
 const TIMER0_VALUE: *mut u32 = 0x4000_0004 as *mut u32;
 const TIMER0_RELOAD: *mut u32 = 0x4000_0008 as *mut u32;
+const TIMER0_INTCLEAR: *mut u32 = 0x4000_000C as *mut u32;
+/// TIMER0's interrupt line on mps2-an386/an500 (QEMU `mps2.c`: CMSDK APB timer 0 → IRQ 8).
+const TIMER0_IRQ: i16 = 8;
+/// NVIC interrupt set-enable register 0.
+const NVIC_ISER0: *mut u32 = 0xE000_E100 as *mut u32;
+
+/// Wraps of TIMER0 (2³² ticks ≈ 168 M instructions each), counted by its interrupt: calls beyond
+/// one wrap (soft-float f64 on the M4F) are metered exactly.
+static WRAPS: AtomicU32 = AtomicU32::new(0);
+
+#[exception]
+unsafe fn DefaultHandler(irqn: i16) {
+    if irqn == TIMER0_IRQ {
+        // SAFETY: TIMER0's interrupt-clear register.
+        unsafe { write_volatile(TIMER0_INTCLEAR, 1) };
+        WRAPS.fetch_add(1, Ordering::Relaxed);
+    }
+}
 
 /// Paint pattern.
 const PAINT: u32 = 0xCCCC_CCCC;
 /// Bytes painted below the caller's stack pointer (bounded by the stack's end).
-const WINDOW: usize = 256 * 1024;
+const WINDOW: usize = 1024 * 1024;
 
 extern "C" {
     /// Lowest stack address (cortex-m-rt's link.x).
     static _stack_end: u32;
 }
 
-/// Starts TIMER0 free-running from 0xFFFF_FFFF (no interrupt).
+/// Starts TIMER0 free-running from 0xFFFF_FFFF, its wrap interrupt counting into `WRAPS`.
 pub fn timer_start() {
     // SAFETY: TIMER0's registers on mps2-an386/an500; no other code touches them.
     unsafe {
         write_volatile(TIMER0_CTRL, 0);
         write_volatile(TIMER0_RELOAD, u32::MAX);
         write_volatile(TIMER0_VALUE, u32::MAX);
-        write_volatile(TIMER0_CTRL, 1);
+        write_volatile(NVIC_ISER0, 1 << TIMER0_IRQ);
+        // enable | interrupt enable
+        write_volatile(TIMER0_CTRL, 1 | 8);
     }
 }
 
 /// Elapsed ticks since start (wrapping).
+/// Ticks since start as a 64-bit count (wraps included).
 #[inline(always)]
-fn now() -> u32 {
-    // SAFETY: volatile read of TIMER0's VALUE register.
-    !unsafe { read_volatile(TIMER0_VALUE) }
+fn now() -> u64 {
+    // re-read when a wrap interrupt lands between the two reads
+    loop {
+        let w = WRAPS.load(Ordering::Relaxed);
+        // SAFETY: volatile read of TIMER0's VALUE register.
+        let v = !unsafe { read_volatile(TIMER0_VALUE) };
+        if WRAPS.load(Ordering::Relaxed) == w {
+            return ((w as u64) << 32) | v as u64;
+        }
+    }
 }
 
 /// Ticks (25 MHz at shift=10) to instructions, rounded.
@@ -105,7 +136,7 @@ pub struct Sample {
 
 /// The target meter: prints one line per metered kernel call.
 pub struct TargetMeter {
-    empty_ticks: u32,
+    empty_ticks: u64,
     empty_stack: usize,
     /// Prefix printed before each line (board and precision).
     pub prefix: &'static str,
@@ -129,18 +160,18 @@ impl TargetMeter {
     }
 
     /// The calibration constants: (empty-region ticks, empty-call stack bytes).
-    pub fn calibration(&self) -> (u32, usize) {
+    pub fn calibration(&self) -> (u64, usize) {
         (self.empty_ticks, self.empty_stack)
     }
 
-    fn raw<R>(&mut self, f: impl FnOnce() -> R) -> (u32, Option<usize>) {
+    fn raw<R>(&mut self, f: impl FnOnce() -> R) -> (u64, Option<usize>) {
         let sp = cortex_m::register::msp::read() as usize;
         paint();
         let t0 = now();
         let r = run(f);
         let t1 = now();
         black_box(r);
-        (t1.wrapping_sub(t0), high_water(sp))
+        (t1.saturating_sub(t0), high_water(sp))
     }
 
     /// Meters `f` without printing.
@@ -150,12 +181,12 @@ impl TargetMeter {
         let t0 = now();
         let r = run(f);
         let t1 = now();
-        let ticks = t1.wrapping_sub(t0).saturating_sub(self.empty_ticks);
+        let ticks = t1.saturating_sub(t0).saturating_sub(self.empty_ticks);
         let stack = high_water(sp).map(|s| s.saturating_sub(self.empty_stack));
         (
             r,
             Sample {
-                instructions: ticks_to_instructions(ticks as u64),
+                instructions: ticks_to_instructions(ticks),
                 stack,
             },
         )
