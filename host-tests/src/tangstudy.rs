@@ -42,7 +42,7 @@ use wrc_kernel::{Error, Material};
 /// Strip capacity of a NORM-pressure patch (NORM grid rows per region).
 pub const NORM_STRIPS: usize = 384;
 /// Cell capacity of a NORM-pressure patch (NORM grid columns).
-pub const NORM_CELLS: usize = 512;
+pub const NORM_CELLS: usize = 768;
 
 /// The six simplified models, in table order.
 pub const MODELS: [Model; 6] = [
