@@ -15,7 +15,7 @@
 //!   with geometry, frame, load split and creepages held equal.
 //!
 //! # The NORM gap of a patch (methods.md §7.3, §9.1)
-//! The geometry is evaluated again at the wheel's solved vertical approach δ_v with
+//! The geometry is evaluated again at the vertical approach δ_v of the kernel's patches with
 //! [`GAP_SAMPLES`] samples per patch (`contact_patches`; the frame does not depend on the sample
 //! count, and each recomputed frame is checked to equal the kernel's). Per sample s: the normal
 //! separation f_n(s), the longitudinal curvature A(s) and the rigid-contact offset x_c(s) (yaw).
@@ -736,7 +736,15 @@ pub fn solve_kernel_case(
         samples: GAP_SAMPLES,
         ..cfg.patches
     };
-    contact_patches(geom, wheel.vertical_approach, &opts, &mut fine)?;
+    // the vertical approach of the kernel's last geometry pass (the frames' own; the returned
+    // `vertical_approach` can be the next iterate when the load loop stops on its pass cap)
+    let dv = wheel.patches[..wheel.n]
+        .iter()
+        .flatten()
+        .map(|p| p.frame.approach_vertical)
+        .next()
+        .unwrap_or(wheel.vertical_approach);
+    contact_patches(geom, dv, &opts, &mut fine)?;
     let mut patches = vec![];
     for wp in wheel.patches[..wheel.n].iter().flatten() {
         let fp = fine
