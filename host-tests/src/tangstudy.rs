@@ -40,9 +40,9 @@ use wrc_kernel::stripes::boussinesq_filter;
 use wrc_kernel::{Error, Material};
 
 /// Strip capacity of a NORM-pressure patch (NORM grid rows per region).
-pub const NORM_STRIPS: usize = 256;
+pub const NORM_STRIPS: usize = 384;
 /// Cell capacity of a NORM-pressure patch (NORM grid columns).
-pub const NORM_CELLS: usize = 256;
+pub const NORM_CELLS: usize = 512;
 
 /// The six simplified models, in table order.
 pub const MODELS: [Model; 6] = [
