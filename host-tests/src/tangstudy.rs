@@ -29,9 +29,7 @@
 //! published (relative), floored (denominator max(|F_exact|, 0.1 μF_n)), absolute |ΔF|/(μF_n);
 //! |ΔM_z|/(μF_n c) with c = √(A_c/π), A_c = NORM's contact area.
 
-use crate::tang::{
-    Creepage as TCreepage, ElementState, Grid, TangOptions, TangSolution, TangSolver,
-};
+use crate::tang::{Creepage as TCreepage, ElementState, TangOptions, TangSolution, TangSolver};
 use crate::wear_ref::{self, WearMap as RefWearMap};
 use crate::wheelrail::{tangential_on_norm, PatchCase};
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
@@ -289,21 +287,7 @@ pub fn on_norm(
 
 /// TANG on NORM's grid and pressure (the reference), μ `mu`, speed `speed` (mm/s).
 pub fn reference(pc: &PatchCase, mat: &Material<f64>, mu: f64, speed: f64) -> (Run, TangSolution) {
-    let g = &pc.norm.grid;
-    let grid = Grid {
-        mx: g.mx,
-        my: g.my,
-        dx: g.dx,
-        dy: g.dy,
-        x0: g.x0,
-        y0: g.y0,
-    };
-    let mut pn = vec![0.0; grid.len()];
-    for j in 0..g.my {
-        for i in 0..g.mx {
-            pn[grid.idx(i, j)] = pc.norm.p(i, j).max(0.0);
-        }
-    }
+    let (grid, pn) = crate::tang::from_norm(&pc.norm);
     let cr = TCreepage {
         xi: pc.creepage.xi,
         eta: pc.creepage.eta,
