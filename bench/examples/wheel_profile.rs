@@ -19,15 +19,18 @@ fn main() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(1);
     let mut sum = 0.0;
+    let (mut calls, mut solves) = (0, 0);
     for _ in 0..reps {
         for c in &cases {
             let g = WheelRail::<f64, 2048, 2048>::place(r, w, &c.setup, &c.pose, c.side, 0.05)
                 .expect("placement");
             let res = solve_wheel(&g, 83_300.0, &mat, &cfg, &mut ws, &mut ()).expect("wheel");
+            calls += res.geometry_calls;
+            solves += res.stripes_solves;
             for p in res.patches[..res.n].iter().flatten() {
                 sum += p.result.totals.fy.abs() + p.result.pmax;
             }
         }
     }
-    println!("Σ (|Fy| + pmax) = {sum:.9}");
+    println!("Σ (|Fy| + pmax) = {sum:.9}; contact_patches calls {calls}, STRIPES solves {solves}");
 }

@@ -428,7 +428,7 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
                 x_extent_mm: [ex.0, ex.1],
                 y_extent_mm: [ey.0, ey.1],
             };
-            let (tg, pn) = exact::norm_on(&sol);
+            let (tg, pn) = wrc_host_tests::tang::from_norm(&sol);
             (tg, pn, nf, Some(sol.converged))
         }
         Normal::Stripes => {

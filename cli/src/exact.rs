@@ -9,7 +9,6 @@
 
 use crate::doc::{Creepage as DocCreepage, Patch, Status};
 use crate::sink::PlotCell;
-use wrc_host_tests::norm::NormSolution;
 use wrc_host_tests::tang::{hertz_pressure, Creepage, ElementState, Grid, TangOptions, TangSolver};
 use wrc_host_tests::wear_ref::{element_wear, WearMap};
 use wrc_kernel::Material;
@@ -43,26 +42,6 @@ pub fn elliptic_grid(a: f64, b: f64, mx: usize, my: usize) -> Grid {
 /// The Hertz pressure at the element centres of `grid` (rescaled to F_n), MPa.
 pub fn hertz_on(grid: &Grid, a: f64, b: f64, fn_: f64) -> Vec<f64> {
     hertz_pressure(grid, a, b, fn_, true)
-}
-
-/// The NORM pressure on its own grid as a TANG grid and pressure.
-pub fn norm_on(sol: &NormSolution) -> (Grid, Vec<f64>) {
-    let g = &sol.grid;
-    let grid = Grid {
-        mx: g.mx,
-        my: g.my,
-        dx: g.dx,
-        dy: g.dy,
-        x0: g.x0,
-        y0: g.y0,
-    };
-    let mut pn = vec![0.0; grid.len()];
-    for j in 0..g.my {
-        for i in 0..g.mx {
-            pn[grid.idx(i, j)] = sol.p(i, j).max(0.0);
-        }
-    }
-    (grid, pn)
 }
 
 /// Runs TANG on `pn` (MPa, grid order) for creepages `cr`, friction `mu`, material `mat`, rolling

@@ -46,7 +46,13 @@ fn inputs_json(a: &SolveArgs) -> serde_json::Value {
         "back_to_back_mm": a.wr.back_to_back.unwrap_or(1360.0), "cant_rad": a.wr.cant, "r0_mm": a.wr.r0,
         "xi": c.xi, "eta": c.eta, "phi_per_mm": c.phi,
         "mu": c.mu, "e_mpa": c.e_mpa, "nu": c.nu, "speed_m_per_s": c.speed,
-        "normal": c.normal.unwrap_or(if elliptic { args::Normal::Hertz } else { args::Normal::Stripes }),
+        "normal": c.normal.unwrap_or(if elliptic {
+            args::Normal::Hertz
+        } else if c.tangential == args::Tangential::Exact {
+            args::Normal::Norm
+        } else {
+            args::Normal::Stripes
+        }),
         "flex": c.flex.unwrap_or(if elliptic { args::Flex::Hertz } else { args::Flex::Ac }),
         "tangential": c.tangential, "strips": c.strips, "cells": c.cells, "precision": c.precision,
     })

@@ -182,6 +182,9 @@ pub(crate) fn adaptation<T: Real>(flex: Option<Flex>) -> Adaptation<T> {
 pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
     let cm = &args.common;
     let t = T::from_f64;
+    if cm.tangential == Tangential::Exact {
+        return solve_exact(args, keep);
+    }
     match cm.normal.unwrap_or(Normal::Stripes) {
         Normal::Stripes => {}
         Normal::Norm => return crate::wr_reference::solve_norm::<T>(args, keep),
@@ -206,11 +209,7 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     cfg.pipeline.method = match cm.tangential {
         Tangential::Fastsim => Method::Fastsim,
         Tangential::Fastrip => Method::Fastrip,
-        Tangential::Exact => {
-            return Err(
-                "--tangential exact is not available for wheel/rail cases in this build".into(),
-            )
-        }
+        Tangential::Exact => unreachable!("handled by solve_exact"),
     };
     cfg.pipeline.adapt = adaptation(cm.flex);
     let mut ws = Box::new(WheelWorkspace::<T, 4, 128, 256, 4, 32, C, 128>::new());
@@ -292,6 +291,123 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
             warnings,
         },
         time_us,
+        cell_mm,
+        wear_strips,
+    })
+}
+
+/// `--tangential exact` on a wheel/rail case: the kernel's per-wheel solve (f64, the chosen
+/// adaptation, kinematic or given creepages) fixes the patches, their frames, loads and creepages;
+/// then, per patch, NORM on the patch's gap at the kernel's patch load and TANG (Kalker's exact
+/// steady rolling) on NORM's pressure (`wrc_host_tests::wheelrail::solve_case`,
+/// `wrc_host_tests::tangstudy::reference`). The reported normal fields are NORM's, the tangential
+/// ones TANG's, wear the KTH law on TANG's slip.
+fn solve_exact(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+    use wrc_host_tests::tangstudy::reference;
+    use wrc_host_tests::wheelrail::{solve_case, NormGridOptions};
+    let cm = &args.common;
+    if cm.normal.unwrap_or(Normal::Norm) != Normal::Norm {
+        return Err(
+            "--tangential exact runs on NORM pressure: use --normal norm (or omit it)".into(),
+        );
+    }
+    let p = prepare::<f64>(args)?;
+    let geom =
+        WheelRail::<f64, NODES, NODES>::place(&p.rail, &p.wheel, &p.setup, &p.pose, p.side, 0.05)
+            .map_err(|e| format!("geometry: {e}"))?;
+    let (mat, mut cfg, speed) = (p.mat, p.cfg, p.speed);
+    cfg.pipeline.adapt = adaptation(cm.flex);
+    let t0 = std::time::Instant::now();
+    let cs = solve_case(&geom, args.wr.fz, &mat, &cfg, &NormGridOptions::default())
+        .map_err(|e| e.to_string())?;
+    let mut patches = vec![];
+    let mut cells = vec![];
+    let mut wear_strips = vec![];
+    let mut cell_mm = (0.1, 0.1);
+    let mut converged = cs.wheel.converged;
+    let mut sweeps = 0u32;
+    let mut warnings = vec![];
+    if !cs.wheel.converged {
+        warnings
+            .push("the kernel's load or frame iteration did not reach its tolerance".to_string());
+    }
+    for (k, pc) in cs.patches.iter().enumerate() {
+        let (run, sol) = reference(pc, &mat, cm.mu, speed);
+        converged &= sol.converged;
+        sweeps = sweeps.max(sol.sweeps as u32);
+        if !sol.converged {
+            warnings.push(format!(
+                "patch {k}: TANG did not converge in {} sweeps",
+                sol.sweeps
+            ));
+        }
+        let n = &pc.norm;
+        let (ex, ey) = (
+            n.extent_x.unwrap_or((0.0, 0.0)),
+            n.extent_y.unwrap_or((0.0, 0.0)),
+        );
+        let stick = run.cells.iter().filter(|c| !c.slip).count();
+        let wear_max = run.wear.iter().map(|w| w.1).fold(0.0, f64::max);
+        patches.push(Patch {
+            y_ref_mm: pc.frame.y_ref_rail,
+            z_ref_mm: pc.frame.z_ref_rail,
+            contact_angle_rad: pc.frame.angle,
+            creepage: DocCreepage {
+                xi: pc.creepage.xi,
+                eta: pc.creepage.eta,
+                phi_per_mm: pc.creepage.phi,
+            },
+            approach_mm: n.approach,
+            fn_n: run.fn_,
+            fx_n: run.fx,
+            fy_n: run.fy,
+            mz_nmm: run.mz,
+            pmax_mpa: n.p_max,
+            area_mm2: n.area,
+            x_extent_mm: [ex.0, ex.1],
+            y_extent_mm: [ey.0, ey.1],
+            stick_area_fraction: if run.cells.is_empty() {
+                0.0
+            } else {
+                stick as f64 / run.cells.len() as f64
+            },
+            wear_depth_max_um: wear_max * 1e3,
+        });
+        if k == 0 {
+            cell_mm = (n.grid.dx, n.grid.dy);
+            wear_strips = run.wear.iter().map(|w| (w.0, w.1 * 1e3)).collect();
+            if keep {
+                let map = wrc_host_tests::wear_ref::WearMap::default();
+                cells = run
+                    .cells
+                    .iter()
+                    .map(|c| PlotCell {
+                        x: c.x,
+                        y: c.y,
+                        pn: c.pn,
+                        px: c.px,
+                        py: c.py,
+                        slip: c.slip,
+                        vs: c.s * speed * 1e-3,
+                        wear_um: if c.slip {
+                            map.element_depth(c.pn, c.s, speed, n.grid.dx) * 1e3
+                        } else {
+                            0.0
+                        },
+                    })
+                    .collect();
+            }
+        }
+    }
+    Ok(Solved {
+        patches,
+        cells,
+        status: Status {
+            converged,
+            iterations: sweeps,
+            warnings,
+        },
+        time_us: t0.elapsed().as_secs_f64() * 1e6,
         cell_mm,
         wear_strips,
     })

@@ -376,3 +376,64 @@ fn wheel_rail_hertz_matches_the_library() {
     assert!(!o.status.success());
     assert_eq!(String::from_utf8_lossy(&o.stderr).trim().lines().count(), 1);
 }
+
+/// `--tangential exact` on a wheel/rail case (1353 mm, right wheel, dy = 6 mm, yaw 7.2 mrad,
+/// 83.3 kN, 200 km/h): the kernel fixes the patch, its frame, load and creepages; NORM on the
+/// patch's gap and TANG on NORM's pressure give the JSON, equal to the library's
+/// (`wheelrail::solve_case` + `tangstudy::reference`) to rounding.
+#[test]
+fn exact_tangential_wheel_rail_matches_the_library() {
+    use wrc_host_tests::tangstudy::reference;
+    use wrc_host_tests::wheelrail::{solve_case, tables, NormGridOptions};
+    use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
+    use wrc_kernel::wheel::WheelConfig;
+    let d = json(&[
+        "solve",
+        "--dy",
+        "6",
+        "--yaw",
+        "7.2",
+        "--fz",
+        "83300",
+        "--back-to-back",
+        "1353",
+        "--tangential",
+        "exact",
+        "--json",
+    ]);
+    assert_eq!(d["inputs"]["normal"], "norm");
+    let (w, r) = tables().unwrap();
+    let setup = TrackSetup {
+        back_to_back: 1353.0,
+        ..TrackSetup::standard()
+    };
+    let pose = WheelsetPose::from_contact(6.0, 7.2e-3, 0.0);
+    let g = WheelRail::place(&*r, &*w, &setup, &pose, Side::Right, 0.05).unwrap();
+    let mat = wrc_kernel::Material::<f64>::identical(205_900.0, 0.28).unwrap();
+    let speed = 200.0 / 3.6 * 1e3;
+    let cfg = WheelConfig::recommended(0.3, speed, 460.0);
+    let cs = solve_case(&g, 83_300.0, &mat, &cfg, &NormGridOptions::default()).unwrap();
+    assert_eq!(d["patches"].as_array().unwrap().len(), cs.patches.len());
+    for (k, pc) in cs.patches.iter().enumerate() {
+        let (run, sol) = reference(pc, &mat, 0.3, speed);
+        assert!(sol.converged);
+        let p = &d["patches"][k];
+        for (key, v) in [
+            ("fx_n", run.fx),
+            ("fy_n", run.fy),
+            ("mz_nmm", run.mz),
+            ("fn_n", run.fn_),
+        ] {
+            let got = p[key].as_f64().unwrap();
+            assert!(
+                (got - v).abs() <= 1e-9 * (1.0 + v.abs()),
+                "{key}: {got} vs {v}"
+            );
+        }
+        assert!((p["pmax_mpa"].as_f64().unwrap() - pc.norm.p_max).abs() < 1e-9);
+        // full slip at dy = 6 mm: |F_t| close to μF_n
+        let ft = run.fx.hypot(run.fy) / (0.3 * run.fn_);
+        assert!(ft > 0.95 && ft <= 1.0 + 1e-9, "{ft}");
+    }
+    assert_eq!(d["status"]["converged"], true);
+}

@@ -124,6 +124,27 @@ impl Grid {
     }
 }
 
+/// NORM's solution as a TANG grid (the same elements) and pressure (MPa, grid order; negative
+/// round-off clipped to 0): the reference tangential problem on the exact normal pressure.
+pub fn from_norm(sol: &crate::norm::NormSolution) -> (Grid, Vec<f64>) {
+    let g = &sol.grid;
+    let grid = Grid {
+        mx: g.mx,
+        my: g.my,
+        dx: g.dx,
+        dy: g.dy,
+        x0: g.x0,
+        y0: g.y0,
+    };
+    let mut pn = vec![0.0; grid.len()];
+    for j in 0..g.my {
+        for i in 0..g.mx {
+            pn[grid.idx(i, j)] = sol.p(i, j).max(0.0);
+        }
+    }
+    (grid, pn)
+}
+
 /// Hertz pressure p0 √(1 − x²/a² − y²/b²) at the element centres strictly inside the ellipse
 /// (0 elsewhere), p0 = 3F_n/(2πab), MPa. If `rescale`, the sampled pressure is scaled so that
 /// δxδy Σ p_n = F_n exactly (as a NORM solution would; methods.md §0.5).

@@ -7,10 +7,12 @@
 //! * [`on_stripes`]: the kernel's per-patch pipeline (`pipeline::solve_patch`, default
 //!   `PipelineConfig::recommended` with the model's adaptation and method) on the kernel's own
 //!   STRIPES samples: exactly what the kernel computes.
-//! * [`on_norm`]: the same kernel models on NORM's pressure: every NORM grid row with contact is a
-//!   strip (a_j, x_c,j from its contact run, p̂_j = 2f_j/(πa_j)), the cells are NORM's elements, the
-//!   pressure is NORM's per element ([`CellPressure`]). Regions = maximal runs of consecutive rows
-//!   with contact. The adaptation is applied per region as in the kernel ([`adapt::apply`]); for
+//! * [`on_norm`]: the same kernel models on NORM's pressure
+//!   ([`crate::wheelrail::tangential_on_norm`], the project's one NORM-pressure path): every NORM
+//!   grid row with contact is a strip (a_j, x_c,j from its contact run, p̂_j = 2f_j/(πa_j)), the
+//!   cells are NORM's elements, the pressure is NORM's per element
+//!   ([`wrc_kernel::patch::CellPressure`]). Regions = maximal runs of consecutive rows with contact.
+//!   The adaptation is applied per region as in the kernel ([`wrc_kernel::adapt::apply`]); for
 //!   Ayasse–Chollet the local ellipse of each row comes from the gap samples: lateral curvature B
 //!   filtered with the zero-phase Boussinesq filter with l₀ = 0.25·(half the region's NORM width)
 //!   (`PatchFraction(0.25)` of methods.md §5.3, evaluated on the NORM contact set as §5.3 says for
@@ -27,22 +29,15 @@
 //! published (relative), floored (denominator max(|F_exact|, 0.1 μF_n)), absolute |ΔF|/(μF_n);
 //! |ΔM_z|/(μF_n c) with c = √(A_c/π), A_c = NORM's contact area.
 
-use crate::norm::NormSolution;
-use crate::tang::{
-    Creepage as TCreepage, ElementState, Grid, TangOptions, TangSolution, TangSolver,
-};
+use crate::tang::{Creepage as TCreepage, ElementState, TangOptions, TangSolution, TangSolver};
 use crate::wear_ref::{self, WearMap as RefWearMap};
-use crate::wheelrail::{GapSample, PatchCase};
-use wrc_kernel::adapt::{self, AcFlexLength, Adaptation, KpBeta, LocalEllipse, Method};
-use wrc_kernel::patch::{CellOut, CellPressure, CellSink, Strip, StripPatch};
+use crate::wheelrail::{tangential_on_norm, PatchCase};
+use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
+use wrc_kernel::patch::{CellOut, CellSink};
 use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
-use wrc_kernel::stripes::boussinesq_filter;
 use wrc_kernel::{Error, Material};
 
-/// Strip capacity of a NORM-pressure patch (NORM grid rows per region).
-pub const NORM_STRIPS: usize = 256;
-/// Cell capacity of a NORM-pressure patch (NORM grid columns).
-pub const NORM_CELLS: usize = 256;
+pub use crate::wheelrail::{NORM_CELLS, NORM_STRIPS};
 
 /// The six simplified models, in table order.
 pub const MODELS: [Model; 6] = [
@@ -234,28 +229,6 @@ pub fn on_stripes(
     })
 }
 
-/// Regions of a NORM solution: maximal runs of consecutive grid rows with contact, as (first row,
-/// last row).
-pub fn norm_regions(sol: &NormSolution) -> Vec<(usize, usize)> {
-    let mut out = vec![];
-    let mut start: Option<usize> = None;
-    for j in 0..sol.grid.my {
-        let on = sol.strips.get(j).is_some_and(|s| !s.runs.is_empty());
-        match (on, start) {
-            (true, None) => start = Some(j),
-            (false, Some(s)) => {
-                out.push((s, j - 1));
-                start = None;
-            }
-            _ => {}
-        }
-    }
-    if let Some(s) = start {
-        out.push((s, sol.grid.my - 1));
-    }
-    out
-}
-
 /// Linear interpolation of (s, value) samples at `s` (clamped).
 fn lerp(xs: &[f64], vs: &[f64], s: f64) -> f64 {
     let n = xs.len();
@@ -273,35 +246,9 @@ fn lerp(xs: &[f64], vs: &[f64], s: f64) -> f64 {
     vs[k - 1] + t * (vs[k] - vs[k - 1])
 }
 
-/// Ayasse–Chollet local ellipse data at the lateral positions `ys` from the gap samples, filter
-/// length `l0` (mm; module docs).
-pub fn ac_local(gap: &[GapSample], ys: &[f64], l0: f64) -> Result<Vec<LocalEllipse<f64>>, Error> {
-    let s: Vec<f64> = gap.iter().map(|g| g.s).collect();
-    let b: Vec<f64> = gap.iter().map(|g| g.b_lat).collect();
-    let a: Vec<f64> = gap.iter().map(|g| g.a_long).collect();
-    let mut bf = vec![0.0; s.len()];
-    boussinesq_filter(&s, &b, l0, &mut bf);
-    ys.iter()
-        .map(|&y| {
-            let bb = lerp(&s, &bf, y).max(1e-6);
-            let aa = lerp(&s, &a, y);
-            let (m, n) = match wrc_kernel::hertz_table::mnr(aa, bb) {
-                Some((m, n, _)) => (m, n),
-                None => {
-                    let h = wrc_kernel::hertz::coefficients(aa, bb)?;
-                    (h.m, h.n)
-                }
-            };
-            let nm = n / m;
-            Ok(LocalEllipse {
-                n_over_m: nm,
-                a_tilde: nm * nm * bb,
-            })
-        })
-        .collect()
-}
-
-/// A model on NORM's pressure (module docs), μ `mu`, speed `speed` (mm/s).
+/// A model on NORM's pressure (module docs), μ `mu`, speed `speed` (mm/s): the project's one
+/// NORM-pressure path, [`crate::wheelrail::tangential_on_norm`] in f64, with the cells collected
+/// for the traction, slip and wear comparisons.
 ///
 /// Errors: `OutOfRange` if the NORM grid exceeds [`NORM_STRIPS`] × [`NORM_CELLS`]; the kernel's
 /// errors.
@@ -312,90 +259,26 @@ pub fn on_norm(
     mu: f64,
     speed: f64,
 ) -> Result<Run, Error> {
-    let sol = &pc.norm;
-    let g = &sol.grid;
-    if g.mx > NORM_CELLS || g.my > NORM_STRIPS {
-        return Err(Error::OutOfRange(
-            "NORM grid exceeds the study's patch capacity",
-        ));
-    }
-    let mut pn: Box<[[f64; NORM_CELLS]; NORM_STRIPS]> = vec![[0.0; NORM_CELLS]; NORM_STRIPS]
-        .into_boxed_slice()
-        .try_into()
-        .map_err(|_| Error::OutOfRange("capacity"))?;
-    let adaptation = model.approach.adaptation();
-    let bound = adaptation.default_bound();
-    let mut cells = Cells(vec![]);
-    for (r0, r1) in norm_regions(sol) {
-        let mut strips = [Strip::<f64>::default(); NORM_STRIPS];
-        let mut ys = vec![];
-        let mut n = 0;
-        for j in r0..=r1 {
-            let st = &sol.strips[j];
-            for run in &st.runs {
-                if n >= NORM_STRIPS {
-                    return Err(Error::OutOfRange("NORM strips"));
-                }
-                let a = 0.5 * (run.x_lead - run.x_trail);
-                strips[n] = Strip {
-                    y: g.y(j),
-                    dy: g.dy,
-                    a,
-                    xc: 0.5 * (run.x_lead + run.x_trail),
-                    p_hat: 2.0 * run.force_per_width / (std::f64::consts::PI * a),
-                    ..Strip::default()
-                };
-                for i in 0..g.mx {
-                    let x = g.x(i);
-                    pn[n][i] = if x > run.x_trail && x < run.x_lead {
-                        sol.p(i, j).max(0.0)
-                    } else {
-                        0.0
-                    };
-                }
-                ys.push(g.y(j));
-                n += 1;
-            }
-        }
-        for s in strips.iter_mut().skip(n) {
-            s.dy = g.dy;
-        }
-        for row in pn.iter_mut().skip(n) {
-            row.iter_mut().for_each(|v| *v = 0.0);
-        }
-        let (y_lo, y_hi) = (g.y(r0) - 0.5 * g.dy, g.y(r1) + 0.5 * g.dy);
-        let local = match model.approach {
-            Approach::Ac => ac_local(&pc.gap, &ys, 0.25 * 0.5 * (y_hi - y_lo))?,
-            _ => vec![],
-        };
-        // Strips with their adaptation; validation needs the flexibilities, so build, then apply.
-        let mut patch = StripPatch::<f64, NORM_STRIPS, NORM_CELLS> {
-            strips,
-            x0: g.x0,
-            dx: g.dx,
-            mat: *mat,
-        };
-        adapt::apply(&mut patch, n, y_lo, y_hi, &local, &adaptation)?;
-        patch.validate()?;
-        let pr = CellPressure(&pn);
-        adapt::solve_tangential(
-            &patch,
-            &pr,
-            &pc.creepage,
-            model.method,
-            bound,
-            mu,
-            &mut cells,
-        )?;
-    }
-    let (fx, fy, mz, fnn) = totals(&cells.0, |_| g.dx * g.dy);
-    let wear = wear_profile(&cells.0, speed, |_| g.dx);
+    let g = &pc.norm.grid;
+    let (_, sinks) = tangential_on_norm::<f64, Cells>(
+        &pc.norm,
+        &pc.gap,
+        &pc.creepage,
+        mat,
+        &model.approach.adaptation(),
+        model.method,
+        mu,
+        |_| Cells(vec![]),
+    )?;
+    let cells: Vec<CellRec> = sinks.into_iter().flat_map(|c| c.0).collect();
+    let (fx, fy, mz, fnn) = totals(&cells, |_| g.dx * g.dy);
+    let wear = wear_profile(&cells, speed, |_| g.dx);
     Ok(Run {
         fx,
         fy,
         mz,
         fn_: fnn,
-        cells: cells.0,
+        cells,
         wear,
         converged: true,
         sweeps: 0,
@@ -404,21 +287,7 @@ pub fn on_norm(
 
 /// TANG on NORM's grid and pressure (the reference), μ `mu`, speed `speed` (mm/s).
 pub fn reference(pc: &PatchCase, mat: &Material<f64>, mu: f64, speed: f64) -> (Run, TangSolution) {
-    let g = &pc.norm.grid;
-    let grid = Grid {
-        mx: g.mx,
-        my: g.my,
-        dx: g.dx,
-        dy: g.dy,
-        x0: g.x0,
-        y0: g.y0,
-    };
-    let mut pn = vec![0.0; grid.len()];
-    for j in 0..g.my {
-        for i in 0..g.mx {
-            pn[grid.idx(i, j)] = pc.norm.p(i, j).max(0.0);
-        }
-    }
+    let (grid, pn) = crate::tang::from_norm(&pc.norm);
     let cr = TCreepage {
         xi: pc.creepage.xi,
         eta: pc.creepage.eta,

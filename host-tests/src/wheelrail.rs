@@ -826,9 +826,9 @@ pub fn gap_sample_at(sm: &[GapSample], s: f64) -> GapSample {
 }
 
 /// Strip capacity of [`tangential_on_norm`] (NORM rows with contact, runs counted separately).
-pub const NORM_STRIPS: usize = 256;
+pub const NORM_STRIPS: usize = 384;
 /// Cell capacity of [`tangential_on_norm`] (NORM columns).
-pub const NORM_CELLS: usize = 256;
+pub const NORM_CELLS: usize = 768;
 
 /// Regions of a NORM solution: maximal runs of consecutive grid rows with contact, as (first row,
 /// last row).

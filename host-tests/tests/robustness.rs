@@ -1251,7 +1251,7 @@ fn pipeline_is_bit_deterministic() {
 /// at y = −0.106 mm reaches |p_t| = 2.6 μ p_n in its three leading cells (x = 0.88…1.20 mm of
 /// a = 1.26 mm), while the totals stay at |F_t| = 0.47 μ F_n. FaStrip's default
 /// `BoundCheck::Off` (CONTACT M=6) did not check the adhesion zone; the kernel default is now
-/// `BoundCheck::Local` (evidence: the Hertzian matrix, `fastrip` module docs), which discards strip
+/// `BoundCheck::Strip` (evidence: the Hertzian matrix, `fastrip` module docs), which discards strip
 /// theory for such a strip and keeps the direction pass's FASTSIM tractions (within μ p_n).
 #[test]
 fn fastrip_adhesion_within_coulomb() {

@@ -206,6 +206,8 @@ pub struct WheelWorkspace<
     ratio: [T; K],
     solves: u32,
     geometry_calls: u32,
+    /// Local exponent of F(δ_v) of the last secant step (first step of the next split).
+    exponent: T,
     /// δ_v of the patches in `patches` (valid within one `solve_wheel` call only).
     patches_dv: Option<T>,
 }
@@ -234,6 +236,7 @@ impl<
             ratio: [T::ZERO; K],
             solves: 0,
             geometry_calls: 0,
+            exponent: math::c(1.5),
             patches_dv: None,
         }
     }
@@ -278,7 +281,8 @@ fn samples_of<T: Real, const K: usize, const NP: usize>(
 
 /// Secant step in log–log coordinates towards `target` for a monotone power-law-like
 /// relation y(x): from the points (x0, y0), (x1, y1) (or a single point with exponent `p0`).
-fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> T {
+/// Returns the next x and the exponent used.
+fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> (T, T) {
     let (lx1, ly1) = (math::ln(x1), math::ln(y1));
     let mut p = p0;
     if x0 > T::ZERO && y0 > T::ZERO && x0 != x1 {
@@ -289,7 +293,7 @@ fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> T {
         }
     }
     let step = math::clamp((math::ln(target) - ly1) / p, math::c(-3.0), math::c(3.0));
-    x1 * math::exp(step)
+    (x1 * math::exp(step), p)
 }
 
 /// STRIPES load whose approach equals `a` (mm) on `samples`; returns (load, converged, solves).
@@ -440,7 +444,10 @@ fn split_load<
         if math::abs(fsum - fz) <= cfg.tol * fz {
             return Ok((dv, fsum, pass + 1, inner_ok));
         }
-        let next = loglog_step(dv0, f0, dv, fsum, fz, math::c(1.5));
+        // first step of a split: the local exponent of the previous split (coupling rounds move
+        // the balance only slightly), 1.5 (Hertz) at the start of a call
+        let (next, p) = loglog_step(dv0, f0, dv, fsum, fz, ws.exponent);
+        ws.exponent = p;
         dv0 = dv;
         f0 = fsum;
         dv = next;
@@ -548,6 +555,7 @@ fn solve<
     ws.loads = [T::ZERO; K];
     ws.solves = 0;
     ws.geometry_calls = 0;
+    ws.exponent = math::c(1.5);
     ws.patches_dv = None;
     let mut dv = math::c::<T>(0.05);
     let mut passes = 0;

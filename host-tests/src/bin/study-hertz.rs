@@ -75,7 +75,7 @@ struct Row {
 ///   direction pass, no bound check); `fastrip_coulomb`, `fastrip_rigid`: the same with the
 ///   direction pass's slip rule changed; `fastrip_rigid_fullslip`: plus `LargeSpin::FullSlip`;
 ///   `fastrip` = `FastripSettings::new`, the kernel default (rigid-slip Coulomb direction pass,
-///   `Contact5`, `BoundCheck::Local`).
+///   `Contact5`, `BoundCheck::Strip`).
 const MODEL_NAMES: [&str; 10] = [
     "fastsim_parabolic",
     "fastsim_elliptic",

@@ -78,7 +78,7 @@ fn compare(
     set: &'static str,
     (b2b, side, dy, load): (f64, Side, f64, f64),
     keep_profiles: bool,
-) -> Vec<Row> {
+) -> Result<Vec<Row>, String> {
     let mut out = vec![];
     for (k, pc) in cs.patches.iter().enumerate() {
         let t0 = Instant::now();
@@ -90,10 +90,17 @@ fn compare(
         let mut prof = vec![("exact".to_string(), y0_cells(&ex.cells))];
         for m in MODELS {
             let run = |r: Result<Run, wrc_kernel::Error>| {
-                r.unwrap_or_else(|e| panic!("{label} patch {k} {}: {e}", m.name()))
+                r.map_err(|e| {
+                    format!(
+                        "{label} patch {k} {} (NORM grid {} x {}): {e}",
+                        m.name(),
+                        pc.norm.grid.mx,
+                        pc.norm.grid.my
+                    )
+                })
             };
-            let a = run(on_stripes(pc, m, mat, mu, speed));
-            let b = run(on_norm(pc, m, mat, mu, speed));
+            let a = run(on_stripes(pc, m, mat, mu, speed))?;
+            let b = run(on_norm(pc, m, mat, mu, speed))?;
             models.push((
                 Compared::new(&a, &ex, mu, area),
                 Compared::new(&b, &ex, mu, area),
@@ -124,7 +131,7 @@ fn compare(
             profiles: keep_profiles.then_some(prof),
         });
     }
-    out
+    Ok(out)
 }
 
 fn main() {
@@ -218,7 +225,7 @@ fn main() {
                         )
                     }),
                 };
-                match res {
+                match res.map_err(|e| e.to_string()).and_then(|r| r) {
                     Ok(v) => {
                         let mut g = rows.lock().unwrap();
                         g.extend(v);
