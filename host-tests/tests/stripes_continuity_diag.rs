@@ -1,7 +1,10 @@
 //! Diagnostics of the STRIPES continuity study (wheel_continuity open item), all `#[ignore]`d:
 //! `DYS=5.873,5.874 cargo test -p wrc-host-tests --release --test stripes_continuity_diag conv -- --ignored --nocapture`
 //! (per-wheel solve), `debug_jump` (STRIPES alone on the kernel's samples, `LOAD`, `OFF`, `SAMPLES`),
-//! `dump_samples` (`DY`), `load_scan` (`DY L0 L1 M`), `unfiltered_runs` (`DY LOADS`), `eps_curve`.
+//! `dump_samples` (`DY`), `load_scan` (`DY L0 L1 M`, optional `B2B LOADN`), `unfiltered_runs`
+//! (`DY LOADS`), `eps_curve`, `fine_regions` (`FROM TO STEP`, optional `B2B LOADN BFLOOR`: per-wheel
+//! solve, per region N, F_x, pmax, area), `sliver_scan` (`DV0 DV1 M BFLOOR`, optional `NLS ONLY0`:
+//! regions that carry no load after the strip re-solve, Manchester rows).
 #![allow(clippy::needless_range_loop)]
 use wrc_host_tests::wheelrail::*;
 use wrc_kernel::geometry::Side;
@@ -75,9 +78,15 @@ fn dump_samples() {
     let (w, r) = tables().unwrap();
     let dy: f64 = std::env::var("DY").unwrap().parse().unwrap();
     let mat = Material::steel();
-    let c = sweep_case(&w, &r, Side::Right, 1360.0, dy, 83_300.0).unwrap();
+    let b2b: f64 = std::env::var("B2B")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(1360.0);
+    let fz: f64 = std::env::var("LOADN")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(83_300.0);
+    let c = sweep_case(&w, &r, Side::Right, b2b, dy, fz).unwrap();
     let g = c.place(&w, &r).unwrap();
-    let (_res, kps) = solve_kernel_case(&g, 83_300.0, &mat, &c.config()).unwrap();
+    let (_res, kps) = solve_kernel_case(&g, fz, &mat, &c.config()).unwrap();
     let cfg = StripesConfig::<f64>::recommended();
     let mut st = Box::new(Stripes::<f64, 128, 8, 4>::new());
     let s = &kps[0].stripes_samples;
@@ -166,9 +175,15 @@ fn load_scan() {
         std::env::var("M").unwrap().parse().unwrap(),
     );
     let mat = Material::steel();
-    let c = sweep_case(&w, &r, Side::Right, 1360.0, dy, 83_300.0).unwrap();
+    let b2b: f64 = std::env::var("B2B")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(1360.0);
+    let fz: f64 = std::env::var("LOADN")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(83_300.0);
+    let c = sweep_case(&w, &r, Side::Right, b2b, dy, fz).unwrap();
     let g = c.place(&w, &r).unwrap();
-    let (_res, kps) = solve_kernel_case(&g, 83_300.0, &mat, &c.config()).unwrap();
+    let (_res, kps) = solve_kernel_case(&g, fz, &mat, &c.config()).unwrap();
     let cfg = StripesConfig::<f64>::recommended();
     let mut st = Box::new(Stripes::<f64, 128, 8, 4>::new());
     let s = &kps[0].stripes_samples;
@@ -281,5 +296,147 @@ fn forces_fine() {
                 .collect::<Vec<_>>()
                 .join(" ")
         );
+    }
+}
+
+/// Fine scan per region: `FROM TO STEP` (mm), per-wheel solve, prints per patch/region
+/// N, Fx, Fy, pmax, area, y-range.
+#[test]
+#[ignore]
+fn fine_regions() {
+    let (w, r) = tables().unwrap();
+    let from: f64 = std::env::var("FROM").unwrap().parse().unwrap();
+    let to: f64 = std::env::var("TO").unwrap().parse().unwrap();
+    let step: f64 = std::env::var("STEP").unwrap().parse().unwrap();
+    let b2b: f64 = std::env::var("B2B")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(1360.0);
+    let load: f64 = std::env::var("LOADN")
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(83_300.0);
+    let mut ws = Box::new(wrc_kernel::wheel::DefaultWheelWorkspace::<f64>::new());
+    let n = ((to - from) / step).round() as usize;
+    for k in 0..=n {
+        let dy = from + step * k as f64;
+        let c = sweep_case(&w, &r, Side::Right, b2b, dy, load).unwrap();
+        let g = c.place(&w, &r).unwrap();
+        let mut cfg = c.config();
+        if let Ok(b) = std::env::var("BFLOOR") {
+            cfg.pipeline.stripes.b_floor = b.parse().unwrap();
+        }
+        let res =
+            wrc_kernel::wheel::solve_wheel(&g, load, &Material::steel(), &cfg, &mut ws, &mut ())
+                .unwrap();
+        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let tot = |f: &dyn Fn(&wrc_kernel::wheel::WheelPatch<f64, 4>) -> f64| -> f64 {
+            ps.iter().map(|p| f(p)).sum()
+        };
+        println!(
+            "dy {dy:.5} conv {} it {} rounds {} solves {} vload {:.4} pconv {:?} N {:.3} Fx {:.3} Fy {:.3} pmax {:.3} area {:.4} | {}",
+            res.converged,
+            res.iterations,
+            res.coupling_rounds,
+            res.stripes_solves,
+            res.vertical_load,
+            ps.iter().map(|p| (p.result.converged, p.result.iterations)).collect::<Vec<_>>(),
+            tot(&|p| p.load),
+            tot(&|p| p.result.totals.fx),
+            tot(&|p| p.result.totals.fy),
+            ps.iter().map(|p| p.result.pmax).fold(0.0, f64::max),
+            tot(&|p| p.result.area),
+            ps.iter()
+                .map(|p| p.result.regions[..p.result.n_regions]
+                    .iter()
+                    .map(|g| format!(
+                        "({:.3}..{:.3} n{} N {:.1} pm {:.2} A {:.3} fx {:.1})",
+                        g.y_lo, g.y_hi, g.count, g.load, g.pmax, g.area, g.totals.fx
+                    ))
+                    .collect::<Vec<_>>()
+                    .join(" "))
+                .collect::<Vec<_>>()
+                .join(" || ")
+        );
+    }
+}
+
+/// Scan for a sliver region (zero load after the re-solve): Manchester right y_ws = 0,
+/// δ_v from `DV0` to `DV1` in `M` steps, load `NL`, `EpsWeighted(0.5)`, `BFLOOR`.
+#[test]
+#[ignore]
+fn sliver_scan() {
+    use wrc_kernel::geometry::{contact_patches, PatchOptions, Patches};
+    use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
+    use wrc_kernel::stripes::{HMode, StripSample};
+    let env = |k: &str| std::env::var(k).unwrap().parse::<f64>().unwrap();
+    let (w, r) = tables().unwrap();
+    let m = env("M") as usize;
+    for row in mbench_rows().unwrap() {
+        let g = row.place(&w, &r).unwrap();
+        for hm in [
+            HMode::EpsWeighted(0.5),
+            HMode::EpsLocal,
+            HMode::Eps0,
+            HMode::EpsSmoothed(2.0),
+        ] {
+            for k in 0..=m {
+                let dv = env("DV0") + (env("DV1") - env("DV0")) * k as f64 / m as f64;
+                let mut ps = Box::new(Patches::<f64, 4, 128>::new());
+                let opts = PatchOptions {
+                    samples: 128,
+                    ..PatchOptions::default()
+                };
+                if contact_patches(&g, dv, &opts, &mut ps).is_err() || ps.len == 0 {
+                    continue;
+                }
+                let s = &ps.as_slice()[0].samples;
+                let st: Vec<StripSample<f64>> = (0..s.n)
+                    .map(|i| StripSample {
+                        y: s.s(i),
+                        dy: s.width[i],
+                        z: s.f_n[i],
+                        curv_a: s.a_long[i],
+                        curv_b: s.b_lat[i],
+                        xc: s.x_c[i],
+                    })
+                    .collect();
+                let mut cfg = PipelineConfig::<f64>::recommended(0.3, 2000.0);
+                cfg.stripes = StripesConfig {
+                    h_mode: hm,
+                    b_floor: env("BFLOOR"),
+                    ..StripesConfig::recommended()
+                };
+                let mut ws = Box::new(DefaultWorkspace::<f64>::new());
+                let nls: Vec<f64> = std::env::var("NLS")
+                    .map(|v| v.split(',').map(|x| x.parse().unwrap()).collect())
+                    .unwrap_or(vec![5_000.0, 10_004.4, 20_000.0]);
+                let only0 = std::env::var("ONLY0").is_ok();
+                for nl in nls {
+                    let res = solve_patch(
+                        &st,
+                        nl,
+                        &row.creepage(),
+                        &mbench_material(),
+                        &cfg,
+                        &mut ws,
+                        &mut (),
+                    );
+                    match res {
+                        Ok(res)
+                            if only0
+                                && !res.regions[..res.n_regions].iter().any(|r| r.load == 0.0) => {}
+                        Ok(res) => println!(
+                            "{} {hm:?} dv {dv:.6} N {nl} regions {} loads {:?}",
+                            row.label(),
+                            res.n_regions,
+                            res.regions[..res.n_regions]
+                                .iter()
+                                .map(|r| r.load)
+                                .collect::<Vec<_>>()
+                        ),
+                        Err(e) => println!("dv {dv:.6} N {nl} err {e:?}"),
+                    }
+                }
+            }
+        }
     }
 }
