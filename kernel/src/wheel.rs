@@ -321,7 +321,13 @@ fn load_for_approach<
             return Err(Error::NonFinite("stripes approach"));
         }
         if math::abs(d1 - a) <= cfg.tol * a {
-            return Ok((n1, sol.converged, it + 1));
+            // the load at `a` itself (one more secant step, no solve): N(a) continuous in `a`
+            // far below the tolerance, so the load loop on δ_v does not see a staircase
+            return Ok((
+                loglog_step_inverse(d0, n0, d1, n1, a),
+                sol.converged,
+                it + 1,
+            ));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
         let next = loglog_step_inverse(d0, n0, d1, n1, a);
