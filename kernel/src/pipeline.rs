@@ -163,8 +163,8 @@ impl<
     }
 }
 
-/// Forwards cells with the global strip index and accumulates wear.
-struct RegionSink<'a, T, K, const SS: usize> {
+/// Forwards cells with the global strip index and accumulates wear (if `WEAR`).
+struct RegionSink<'a, T, K, const SS: usize, const WEAR: bool> {
     inner: &'a mut K,
     wear: &'a mut StripWear<T, SS>,
     map: &'a WearMap<T>,
@@ -173,12 +173,14 @@ struct RegionSink<'a, T, K, const SS: usize> {
     dx: T,
 }
 
-impl<T: Real, K: CellSink<T>, const SS: usize> CellSink<T> for RegionSink<'_, T, K, SS> {
+impl<T: Real, K: CellSink<T>, const SS: usize, const WEAR: bool> CellSink<T>
+    for RegionSink<'_, T, K, SS, WEAR>
+{
     #[inline]
     fn cell(&mut self, j: usize, i: usize, out: &CellOut<T>) {
         let g = self.first + j;
-        if out.slip {
-            let s = math::hypot(out.sx, out.sy);
+        if WEAR && out.slip {
+            let s = math::hypot_fast(out.sx, out.sy);
             self.wear
                 .add_cell(self.map, g, out.pn, s, self.speed, self.dx);
         }
@@ -243,6 +245,55 @@ pub fn solve_patch<
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
     sink: &mut K,
 ) -> Result<PatchResult<T, NR>, Error> {
+    solve_patch_impl::<T, K, NS, NR, S, C, SS, true>(samples, load, cr, mat, cfg, ws, sink)
+}
+
+/// [`solve_patch`] for the forces only: no cells leave, and the wear is not computed (every
+/// region's `wear_max` is 0, the workspace's wear stays cleared). Everything else — STRIPES, the
+/// adaptation, the tangential solve, the totals — is the same computation, bit for bit. For
+/// iterations that use only the totals (e.g. the normal–tangential coupling rounds of a wheel
+/// solve), where the per-cell wear of every slipping cell would be wasted work.
+///
+/// Errors: as [`solve_patch`] except the wear-depth overflow.
+#[inline(never)]
+pub fn solve_patch_forces<
+    T: Real,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+) -> Result<PatchResult<T, NR>, Error> {
+    solve_patch_impl::<T, (), NS, NR, S, C, SS, false>(samples, load, cr, mat, cfg, ws, &mut ())
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn solve_patch_impl<
+    T: Real,
+    K: CellSink<T>,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+    const WEAR: bool,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    sink: &mut K,
+) -> Result<PatchResult<T, NR>, Error> {
     check_positive(cfg.mu, "mu")?;
     check_positive(cfg.speed, "speed")?;
     cr.check()?;
@@ -279,7 +330,7 @@ pub fn solve_patch<
         }
         let patch =
             adapt::region_patch::<T, S, C, SS, NR>(&ws.set, r, &cfg.adapt, mat, &mut ws.local)?;
-        let mut rs = RegionSink {
+        let mut rs = RegionSink::<T, K, SS, WEAR> {
             inner: sink,
             wear: &mut ws.wear,
             map: &cfg.wear,
