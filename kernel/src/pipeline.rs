@@ -321,17 +321,41 @@ fn solve_patch_impl<
         alt.regions[ri + 1] = sol.regions[ri];
         alt.regions[ri + 1].y_lo = ys;
         let (m, a) = if w >= c::<T>(0.5) {
-            let m = layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, &mut ())?;
-            let a = layout_and_tangential(&alt, samples, load, cr, mat, cfg, ws, sink)?;
+            let m = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &sol,
+                samples,
+                load,
+                cr,
+                mat,
+                cfg,
+                ws,
+                &mut (),
+            )?;
+            let a = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &alt, samples, load, cr, mat, cfg, ws, sink,
+            )?;
             (m, a)
         } else {
-            let a = layout_and_tangential(&alt, samples, load, cr, mat, cfg, ws, &mut ())?;
-            let m = layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, sink)?;
+            let a = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &alt,
+                samples,
+                load,
+                cr,
+                mat,
+                cfg,
+                ws,
+                &mut (),
+            )?;
+            let m = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &sol, samples, load, cr, mat, cfg, ws, sink,
+            )?;
             (m, a)
         };
         return Ok(blend(&m, &a, ri, w));
     }
-    layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, sink)
+    layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+        &sol, samples, load, cr, mat, cfg, ws, sink,
+    )
 }
 
 /// Below this neck ratio r = h_neck / min(left peak, right peak) of the fine solution's strip
@@ -499,7 +523,7 @@ fn blend<T: Real, const NR: usize>(
     out
 }
 
-/// Strip layout of `sol`, adaptation and tangential solve per region, wear.
+/// Strip layout of `sol`, adaptation and tangential solve per region, wear (if `WEAR`).
 #[allow(clippy::too_many_arguments)]
 fn layout_and_tangential<
     T: Real,
@@ -509,6 +533,7 @@ fn layout_and_tangential<
     const S: usize,
     const C: usize,
     const SS: usize,
+    const WEAR: bool,
 >(
     sol: &StripesSolution<T, NR>,
     samples: &[StripSample<T>],
