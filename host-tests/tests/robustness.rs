@@ -1499,6 +1499,7 @@ proptest! {
             l0_mode: match lm { 0 => L0Mode::Off, 1 => L0Mode::HertzB, _ => L0Mode::PatchFraction(frac) },
             blend,
             b_min: bmin,
+            b_floor: 0.0,
         };
         if fastsim {
             cfg.method = Method::Fastsim;

@@ -3,33 +3,51 @@
 //! roll, the kernel's default `wheel::solve_wheel` (f64), in **0.01 mm steps** over windows
 //! where the contact changes character (found with `wheelrail::transition_cases` on the sweep and
 //! listed below): STRIPES regions appear or split at the gauge corner (dy ≈ 3.98 and 4.75 mm) and
-//! at the flange root (dy ≈ 5.88 mm), and the flange-root contact sets in (dy ≈ 4.5 mm).
+//! at the flange root (dy ≈ 5.88 mm), and the flange-root contact sets in and merges with a
+//! gauge-corner region (dy ≈ 4.49…4.51 mm).
 //!
-//! Quantities per wheel: Σ N_k, Σ F_x,k, Σ F_y,k (patch frames; one patch in these windows),
-//! pmax (max over patches), area (sum over patches).
+//! Quantities per wheel: Σ N_k, Σ F_x,k, Σ F_y,k (patch frames), pmax (max over patches and
+//! regions), area (sum over patches).
 //!
-//! Measure (what a smooth function allows): with the step differences Δ_i = q(dy_i+1) − q(dy_i),
-//! a jump shows as an isolated step far larger than its neighbours, while a smooth q has
-//! Δ_i/Δ_i±1 = 1 + O(h q''/q'). Asserted for every interior step:
-//! **|Δ_i| ≤ 3·max(|Δ_i−1|, |Δ_i+1|) + 1e-4·S_q**, with S_q the quantity's scale (F_z for
-//! forces, the window's largest pmax and area); the floor covers turning points where Δ → 0.
-//! A step discontinuity of more than 0.01 % of the scale therefore fails. The largest ratio and
-//! the largest step relative to S_q are printed per window.
+//! # Measure: jumps do not shrink under refinement, kinks do
+//! pmax is a maximum over regions and strips and the contact regions appear, split and merge, so
+//! the quantities are continuous but only piecewise smooth: kinks (slope breaks) are legitimate.
+//! They show on the 0.01 mm grid as steps much larger than their neighbours, e.g. (measured)
+//! * dy 4.50→4.51: Δpmax = +238 MPa against −14 and +75 MPa beside it — the flange-root region
+//!   (pmax 627 MPa at 4.49, rising 45 MPa per 0.00125 mm) takes over the maximum from the tread
+//!   region at 4.5037, and its growth slows ninefold at 4.5113 (its load grows 350 N per
+//!   0.0001 mm before, 55 N after — a slope break of the geometry, continuous at 0.0001 mm);
+//! * dy 4.57→4.58 and 4.59→4.60: Δpmax ≈ +30 MPa against ±2…5 MPa — the peak strip of the
+//!   merged flange region changes (a max over strips: rise, turn, plateau);
+//! * dy 4.71→4.72: ΔF_x = −86 N against −24 and −3 N — not FaStrip noise: the gauge-corner
+//!   region's F_x/N stays 0.2106…0.2107 while its load wanders 4403 → 3457 N over 0.02 mm (the
+//!   region moves along the rail head 12× faster than dy), continuous at 0.0001 mm with slope
+//!   breaks (e.g. at 4.7012, 4.7021).
 //!
-//! Result (2026-12-01): the forces (Σ N, Σ F_x, Σ F_y) pass in every window (worst |Δ|/bound 0.61)
-//! and are asserted in the test command. pmax and area do **not**: STRIPES has small jumps where
-//! its fine solution's region edges move by more than the shift (at 0.001 mm resolution:
-//! dy 4.002→4.003 pmax −3.9 MPa (−0.30 %), area +0.34 mm² (+0.33 %), a region edge moving
-//! 0.013 mm; dy 5.873→5.874 area +0.25 mm² (+0.44 %) in one region with a steady strip count;
-//! dy 4.480→4.481 a flange-root region's edge moving 0.22 mm, area +0.55 mm²). They are asserted
-//! in the ignored test `pmax_and_area_are_continuous_in_the_shift` (fails; open item), not
-//! hidden by a looser bound. Localised at dy 5.873→5.874: STRIPES alone on the kernel's samples
-//! (same load) shows the jump in its approach (Δδ = −5.4e-5 mm in 0.0005 mm of shift against
-//! −1e-5 mm in the neighbouring steps) with the default curvature filter `PatchFraction(0.25)`,
-//! and a smooth approach with the filter off (`L0Mode::Off`), with one basin and a continuous
-//! filter length in both; the mechanism inside the filtered pass is not yet found. The wheel
-//! solve misses its tolerance at that shift (`converged = false`).
+//! A neighbour ratio alone cannot tell these from a jump. Refinement can: at a discontinuity J
+//! the change over the sub-interval containing it stays ≥ J however fine the steps, while a
+//! continuous, piecewise-smooth quantity's sub-steps shrink and become like their neighbours
+//! (a kink's sub-step lies between its neighbours' sizes). So every 0.01 mm step whose change
+//! exceeds the floor 1e-4·S_q (S_q = F_z for the forces, the window's largest pmax and area;
+//! solver tolerances are 1e-6) is refined 8× (0.00125 mm); a sub-step is *suspect* when it is
+//! above the floor and holds more than ¼ of the step's variation V = Σ|sub-steps| or more than
+//! 1.5× its larger neighbour. A step without suspects is continuous at this resolution; each
+//! suspect is refined 8× again, down to three levels (0.01/512 ≈ 2e-5 mm); a suspect at the last
+//! level is a **jump**. (Limit: a jump below the floor, or smaller than the smooth change of its
+//! 2e-5 mm sub-step, is not seen — e.g. F_x micro-steps of ≈ 2 N = 2.4e-5·S at dy 4.0660 and
+//! 4.0668 from the tangential solve, found at 0.0001 mm.)
+//!
+//! Result (2026-12-01, `StripesConfig::b_floor` 0.1, soft basins): the curvature-floor and
+//! basin jumps found before (at 0.001 mm: dy 4.002→4.003 pmax −0.30 %, area +0.33 %;
+//! 5.873→5.874 area +0.44 %; 4.480→4.481 a flange-root region edge moving 0.22 mm) are gone,
+//! and the region appearances (4.49, 5.89) are continuous. **Open:** the strip layout jumps at
+//! merges and splits of regions ([`KNOWN_JUMPS`]: 4.61 merge pmax −2.5 %, area −0.75 %; 4.68
+//! split F_x −30 N; 4.74 merge area −0.3 %) — the fine solution is continuous there, the 32
+//! evenly spaced strips per connected region are not (a merged region's strips are spread over
+//! both former regions). At the exact shift of a split the jump also stalls the load–traction
+//! coupling (`converged = false` at dy 4.6836328 and 5.8825, printed).
 
+use std::collections::BTreeMap;
 use wrc_host_tests::wheelrail::*;
 use wrc_kernel::geometry::Side;
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace};
@@ -43,46 +61,167 @@ const WINDOWS: [(f64, f64, usize); 4] = [
     (1360.0, 5.80, 20),
 ];
 const LOAD: f64 = 83_300.0;
+/// Base step, mm.
+const H: f64 = 0.01;
+/// Refinement factor per level and the number of levels (finest step H/512 ≈ 2e-5 mm); positions
+/// are kept in units of the finest step.
+const R: usize = 8;
+const LEVELS: u32 = 3;
+const UNIT: usize = R * R * R;
+/// Jumps the measure finds that are not fixed yet: (b2b, start of the 0.01 mm step, quantity).
+/// Each must still be found (a fix shows up as a failure that asks to shorten the list). All are
+/// the strip layout's (`Stripes::layout`: 32 evenly spaced strips per connected region) at a
+/// merge or split of regions, while STRIPES' fine solution on the samples stays continuous
+/// there (module docs).
+const KNOWN_JUMPS: [(f64, &str, &str); 9] = [
+    // merge of the gauge-corner and flange regions at dy 4.6126…4.6138: pmax 1840 → 1794 MPa
+    // (−2.5 %: the 3 mm flange part goes from 32 strips to ≈ 6), area −0.9 mm², F_x +58 N
+    (1360.0, "4.61", "Fx"),
+    (1360.0, "4.61", "Fy"),
+    (1360.0, "4.61", "pmax"),
+    (1360.0, "4.61", "area"),
+    // split at the gauge corner at dy 4.68360…4.68365: F_x −30 N, pmax +3.4 MPa
+    (1360.0, "4.68", "Fx"),
+    (1360.0, "4.68", "Fy"),
+    (1360.0, "4.68", "pmax"),
+    // merge at dy 4.7484…4.7485: area −0.39 mm² (−0.3 %), pmax −1.9 MPa (−0.17 %), the strip
+    // set's approach −1.1e-4 mm (the fine solution's is continuous)
+    (1360.0, "4.74", "pmax"),
+    (1360.0, "4.74", "area"),
+];
+const NAMES: [&str; 5] = ["N", "Fx", "Fy", "pmax", "area"];
 
-/// Forces: asserted (test command).
-#[test]
-fn wheel_forces_are_continuous_in_the_shift() {
-    continuity(&[0, 1, 2]);
+struct Solver<'a> {
+    w: &'a Table,
+    r: &'a Table,
+    ws: Box<DefaultWheelWorkspace<f64>>,
+    b2b: f64,
+    from: f64,
+    /// solved quantities by position in units of H/`UNIT` from `from`
+    cache: BTreeMap<usize, [f64; 5]>,
+    sig: BTreeMap<usize, Vec<usize>>,
+    /// refinement shifts where the wheel solve did not converge
+    not_converged: Vec<f64>,
 }
 
-/// pmax and area: open item (see the module docs):
-/// `cargo test -p wrc-host-tests --release --test wheel_continuity -- --ignored --nocapture`.
-#[test]
-#[ignore]
-fn pmax_and_area_are_continuous_in_the_shift() {
-    continuity(&[3, 4]);
-}
-
-fn continuity(checked: &[usize]) {
-    let (w, r) = tables().unwrap();
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let names = ["N", "Fx", "Fy", "pmax", "area"];
-    let mut fails = vec![];
-    for (b2b, from, steps) in WINDOWS {
-        let mut rows: Vec<[f64; 5]> = vec![];
-        let mut sig = vec![];
-        for k in 0..=steps {
-            let dy = from + 0.01 * k as f64;
-            let c = sweep_case(&w, &r, Side::Right, b2b, dy, LOAD).unwrap();
-            let g = c.place(&w, &r).unwrap();
-            let res =
-                solve_wheel(&g, LOAD, &Material::steel(), &c.config(), &mut ws, &mut ()).unwrap();
-            assert!(res.converged, "{}", c.label);
-            let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
-            sig.push(contact_signature(&res));
-            rows.push([
-                ps.iter().map(|p| p.load).sum(),
-                ps.iter().map(|p| p.result.totals.fx).sum(),
-                ps.iter().map(|p| p.result.totals.fy).sum(),
-                ps.iter().map(|p| p.result.pmax).fold(0.0, f64::max),
-                ps.iter().map(|p| p.result.area).sum(),
-            ]);
+impl Solver<'_> {
+    fn q(&mut self, pos: usize) -> [f64; 5] {
+        if let Some(q) = self.cache.get(&pos) {
+            return *q;
         }
+        let dy = self.from + H * pos as f64 / UNIT as f64;
+        let c = sweep_case(self.w, self.r, Side::Right, self.b2b, dy, LOAD).unwrap();
+        let g = c.place(self.w, self.r).unwrap();
+        let res = solve_wheel(
+            &g,
+            LOAD,
+            &Material::steel(),
+            &c.config(),
+            &mut self.ws,
+            &mut (),
+        )
+        .unwrap();
+        // the 0.01 mm grid must converge; a refinement point may land on the exact shift of a
+        // split/merge, where the strip layout's jump (KNOWN_JUMPS) stalls the load–traction
+        // coupling: reported, not asserted
+        if pos.is_multiple_of(UNIT) {
+            assert!(res.converged, "{} (dy {dy:.6})", c.label);
+        } else if !res.converged {
+            self.not_converged.push(dy);
+        }
+        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let q = [
+            ps.iter().map(|p| p.load).sum(),
+            ps.iter().map(|p| p.result.totals.fx).sum(),
+            ps.iter().map(|p| p.result.totals.fy).sum(),
+            ps.iter().map(|p| p.result.pmax).fold(0.0, f64::max),
+            ps.iter().map(|p| p.result.area).sum(),
+        ];
+        self.cache.insert(pos, q);
+        self.sig.insert(pos, contact_signature(&res));
+        q
+    }
+
+    /// Whether quantity `k` is continuous on [a, a + len] (positions in H/`UNIT`) at this
+    /// resolution (module docs): the `R` sub-steps spread the change (largest ≤ ¼ of their total
+    /// variation) or stay below `floor`; otherwise every sub-step above ¼ of the variation is
+    /// checked one level finer, and a sub-step that still holds the change at the last level is a
+    /// jump. Returns the smallest spread factor V/max met on the way (for the printout) and the
+    /// verdict.
+    fn continuous(
+        &mut self,
+        a: usize,
+        len: usize,
+        k: usize,
+        floor: f64,
+        level: u32,
+    ) -> (f64, bool) {
+        let sub = len / R;
+        let d: Vec<f64> = (0..R)
+            .map(|j| self.q(a + (j + 1) * sub)[k] - self.q(a + j * sub)[k])
+            .collect();
+        let v: f64 = d.iter().map(|x| x.abs()).sum();
+        let m = d.iter().map(|x| x.abs()).fold(0.0, f64::max);
+        if m <= floor {
+            return (f64::INFINITY, true);
+        }
+        // a sub-step that holds most of the change or stands out from its neighbours
+        let suspect = |j: usize| {
+            let nb = match j {
+                0 => d[1].abs(),
+                _ if j == R - 1 => d[R - 2].abs(),
+                _ => d[j - 1].abs().max(d[j + 1].abs()),
+            };
+            d[j].abs() > floor && (d[j].abs() > v / 4.0 || d[j].abs() > 1.5 * nb)
+        };
+        if !(0..R).any(suspect) {
+            return (v / m, true);
+        }
+        if level == LEVELS {
+            return (v / m, false);
+        }
+        let mut worst = (v / m, true);
+        for j in 0..R {
+            if suspect(j) {
+                let (f, ok) = self.continuous(a + j * sub, sub, k, floor, level + 1);
+                worst = (worst.0.min(f), worst.1 && ok);
+            }
+        }
+        worst
+    }
+}
+
+/// Σ N, Σ F_x, Σ F_y, pmax and area of the per-wheel solve are continuous in the lateral shift
+/// over the four windows (module docs: neighbour flag + refinement; jumps do not shrink).
+#[test]
+fn wheel_solve_is_continuous_in_the_shift() {
+    let (w, r) = tables().unwrap();
+    let mut fails = vec![];
+    let mut still: Vec<(f64, String, &str)> = vec![];
+    for (b2b, from, steps) in WINDOWS {
+        let mut s = Solver {
+            w: &w,
+            r: &r,
+            ws: Box::new(DefaultWheelWorkspace::<f64>::new()),
+            b2b,
+            from,
+            cache: BTreeMap::new(),
+            sig: BTreeMap::new(),
+            not_converged: vec![],
+        };
+        let base = UNIT;
+        let rows: Vec<[f64; 5]> = (0..=steps).map(|i| s.q(i * base)).collect();
+        let sigs: Vec<Vec<usize>> = (0..=steps).map(|i| s.sig[&(i * base)].clone()).collect();
+        let changes: Vec<String> = sigs
+            .windows(2)
+            .enumerate()
+            .filter(|(_, g)| g[0] != g[1])
+            .map(|(i, g)| format!("{:.2}: {:?}→{:?}", from + H * (i + 1) as f64, g[0], g[1]))
+            .collect();
+        println!(
+            "b2b {b2b} dy {from:.2}…{:.2} region changes {changes:?}",
+            from + H * steps as f64
+        );
         let scale = [
             LOAD,
             LOAD,
@@ -90,42 +229,65 @@ fn continuity(checked: &[usize]) {
             rows.iter().map(|q| q[3]).fold(0.0, f64::max),
             rows.iter().map(|q| q[4]).fold(0.0, f64::max),
         ];
-        let changes: Vec<String> = sig
-            .windows(2)
-            .enumerate()
-            .filter(|(_, s)| s[0] != s[1])
-            .map(|(i, s)| format!("{:.2}: {:?}→{:?}", from + 0.01 * (i + 1) as f64, s[0], s[1]))
-            .collect();
-        let mut line = format!(
-            "b2b {b2b} dy {from:.2}…{:.2} changes {changes:?}:",
-            from + 0.01 * steps as f64
-        );
-        for q in 0..5 {
-            let d: Vec<f64> = rows.windows(2).map(|p| p[1][q] - p[0][q]).collect();
-            let mut worst_ratio = 0.0f64;
-            for i in 1..d.len() - 1 {
-                let nb = d[i - 1].abs().max(d[i + 1].abs());
-                let bound = 3.0 * nb + 1e-4 * scale[q];
-                worst_ratio = worst_ratio.max(d[i].abs() / bound);
-                if d[i].abs() > bound && checked.contains(&q) {
-                    fails.push(format!(
-                        "b2b {b2b} dy {:.2}→{:.2}: Δ{} {:.4e} vs neighbours {:.4e}, {:.4e}",
-                        from + 0.01 * i as f64,
-                        from + 0.01 * (i + 1) as f64,
-                        names[q],
-                        d[i],
-                        d[i - 1],
-                        d[i + 1]
-                    ));
+        for k in 0..5 {
+            let d: Vec<f64> = rows.windows(2).map(|p| p[1][k] - p[0][k]).collect();
+            let floor = 1e-4 * scale[k];
+            let maxstep = d.iter().map(|x| x.abs()).fold(0.0, f64::max) / scale[k];
+            let mut line = format!("  {} max step {:.2e}·S;", NAMES[k], maxstep);
+            let mut least = (f64::INFINITY, 0usize);
+            for (i, di) in d.iter().enumerate() {
+                if di.abs() <= floor {
+                    continue;
+                }
+                let (f, ok) = s.continuous(i * base, base, k, floor, 1);
+                if f < least.0 {
+                    least = (f, i);
+                }
+                if !ok {
+                    let key = format!("{:.2}", from + H * i as f64);
+                    let known = KNOWN_JUMPS
+                        .iter()
+                        .any(|(b, at, q)| *b == b2b && *at == key && *q == NAMES[k]);
+                    line += &format!(
+                        " JUMP {key}→{:.2} Δ {di:+.4e}{};",
+                        from + H * (i + 1) as f64,
+                        if known { " (known)" } else { "" }
+                    );
+                    if known {
+                        still.push((b2b, key, NAMES[k]));
+                    } else {
+                        fails.push(format!(
+                            "b2b {b2b} dy {key}→{:.2}: Δ{} {di:+.4e} does not spread under \
+                             refinement to {:.1e} mm (a jump)",
+                            from + H * (i + 1) as f64,
+                            NAMES[k],
+                            H / UNIT as f64
+                        ));
+                    }
                 }
             }
-            let maxstep = d.iter().map(|x| x.abs()).fold(0.0, f64::max) / scale[q];
             line += &format!(
-                " {} max step {:.2e}·S, worst |Δ|/bound {:.2};",
-                names[q], maxstep, worst_ratio
+                " least spread V/max {:.1} at {:.2}",
+                least.0,
+                from + H * least.1 as f64
             );
+            println!("{line}");
         }
-        println!("{line}");
+        println!(
+            "  {} solves; not converged at refinement shifts {:?}",
+            s.cache.len(),
+            s.not_converged
+        );
+    }
+    for (b, at, q) in KNOWN_JUMPS {
+        if !still
+            .iter()
+            .any(|(b2, a2, q2)| *b2 == b && a2 == at && *q2 == q)
+        {
+            fails.push(format!(
+                "known jump b2b {b} dy {at} {q} is gone — shorten KNOWN_JUMPS"
+            ));
+        }
     }
     assert!(fails.is_empty(), "{fails:#?}");
 }

@@ -36,8 +36,11 @@
 //! passes when there is more than one basin, so the result is a continuous composition). With
 //! [`HMode::Eps0`], ε₀ of a basin is ε at the minimum that sets its z_ref (it can jump when that
 //! minimum changes; seed-literal option only). [`L0Mode::PatchFraction`] uses one l₀ per basin from its
-//! half-width w, blended the same way (w_eff,k = max_j (1 − θ_kj) w_kj, w_kj = half-span of the contact
-//! sets of basins k…j).
+//! half-width w, blended the same way (w_eff,k = max_j (1 − θ_kj) w_kj, w_kj = half the measure of the
+//! contact sets of basins k…j: edge to edge for a connected set, and continuous when an island of
+//! contact appears, unlike the hull). Samples between two minima belong to both basins with weights
+//! from their barriers to either minimum (soft zones, see `find_basins`): z_ref, the filter length
+//! and the measure blend across the saddle instead of switching at its arg-max sample.
 //!
 //! The output **regions** (patches) are the connected components of the final contact set on the
 //! samples; each gets its own evenly spaced strips ([`Stripes::layout`], ≥ [`MIN_STRIPS_PER_REGION`])
@@ -106,7 +109,7 @@ pub enum L0Mode<T> {
     Off,
     /// l₀ = semi-width b of the Hertz ellipse at the deepest sample under the target load.
     HertzB,
-    /// l₀ = f·w per basin, w = half the lateral extent of its contact set in an unfiltered pass.
+    /// l₀ = f·w per basin, w = half the measure of its contact set in an unfiltered pass.
     PatchFraction(T),
 }
 
@@ -122,6 +125,32 @@ pub struct StripesConfig<T> {
     pub blend: T,
     /// Lower clamp of the filtered lateral curvature, 1/mm (§5.3: 1e-6).
     pub b_min: T,
+    /// Curvature floor relative to A (dimensionless, ≥ 0): the Hertz quantities of a sample are
+    /// evaluated at B_eff = [`effective_curvature`]`(B_f, b₀)`, b₀ = max(`b_min`, `b_floor`·A),
+    /// a C¹ soft clamp that equals B_f for B_f ≥ 2b₀ (Hertz-exact there). 0 = the hard clamp
+    /// max(B_f, `b_min`) of §5.3 (up to B_f < 2·`b_min`).
+    pub b_floor: T,
+}
+
+/// C¹ soft clamp of the filtered lateral curvature B_f (1/mm) at the floor `b0` (1/mm, > 0):
+/// b₀ for B_f ≤ 0, b₀ + B_f²/(4b₀) for 0 < B_f < 2b₀, B_f for B_f ≥ 2b₀ (continuous with a
+/// continuous slope 0…1).
+///
+/// Why (continuity in the shift, §6 item 8): the Hertz quantities of a sample depend on ln(B/A)
+/// as B/A → 0 (ε = 0.82 at B/A = 1e-3, 0.69 at 0.07, 0.50 at 1; strip stiffness and Ã alike). With
+/// the hard clamp max(B_f, 1e-6) a sample whose filtered curvature crosses zero inside the contact
+/// set (the edge of a concave zone) changes its ε by ≈ 0.13 while B_f moves by 7e-5 1/mm, i.e. in
+/// ≈ 5e-4 mm of wheelset shift: the strip depth h = ε(δ − z_ref) − (z − z_ref) of that sample, the
+/// approach, pmax and area then step (S1002/UIC60 1360 mm 83.3 kN: area +0.44 % at dy 5.873→5.874,
+/// pmax −0.30 % at 4.002→4.003). A floor b₀ proportional to A bounds dε/dB_f by ≈ |dε/dln B|/b₀.
+pub fn effective_curvature<T: Real>(bf: T, b0: T) -> T {
+    if bf <= T::ZERO {
+        b0
+    } else if bf < T::TWO * b0 {
+        b0 + bf * bf / (c::<T>(4.0) * b0)
+    } else {
+        bf
+    }
 }
 
 impl<T: Real> StripesConfig<T> {
@@ -171,6 +200,7 @@ impl<T: Real> StripesConfig<T> {
             l0_mode: L0Mode::PatchFraction(c(0.25)),
             blend: c(0.25),
             b_min: c(1e-6),
+            b_floor: c(0.1),
         }
     }
     /// The spec's recommended set (§6 item 11): `EpsSmoothed(2 mm)` + `PatchFraction(0.25)`.
@@ -344,10 +374,8 @@ struct Basin<T> {
     zref: T,
     /// ε₀ for `Eps0`.
     eps0: T,
-    /// Half-span of the basin's contact set (for `PatchFraction`), mm; and its lateral limits.
-    ylo: T,
-    yhi: T,
-    in_contact: bool,
+    /// Measure (total lateral length) of the basin zone's contact set (for `PatchFraction`), mm.
+    len: T,
 }
 
 /// Summary of one output region (connected component of the contact set).
@@ -520,6 +548,8 @@ pub struct Stripes<T, const NS: usize, const NB: usize, const NR: usize> {
     hu: [T; NS],
     tmp: [T; NS],
     zone: [u8; NS],
+    /// Weight of basin zone+1 in sample i (soft zone boundary at the saddle, see `find_basins`).
+    sw: [T; NS],
     l0: [T; NB],
     l0_global: T,
     n: usize,
@@ -557,9 +587,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             theta: T::ZERO,
             zref: T::ZERO,
             eps0: T::ZERO,
-            ylo: T::ZERO,
-            yhi: T::ZERO,
-            in_contact: false,
+            len: T::ZERO,
         };
         Self {
             y: [T::ZERO; NS],
@@ -574,6 +602,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             hu: [T::ZERO; NS],
             tmp: [T::ZERO; NS],
             zone: [0; NS],
+            sw: [T::ZERO; NS],
             l0: [T::ZERO; NB],
             l0_global: T::ZERO,
             n: 0,
@@ -669,6 +698,10 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             return Err(Error::OutOfRange("blend"));
         }
         check_positive(cfg.b_min, "b_min")?;
+        check_finite(cfg.b_floor, "b_floor")?;
+        if cfg.b_floor < T::ZERO {
+            return Err(Error::OutOfRange("b_floor"));
+        }
         match cfg.h_mode {
             HMode::EpsSmoothed(l) | HMode::EpsWeighted(l) => {
                 check_positive(l, "l_eps")?;
@@ -715,7 +748,8 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                     }
                 }
                 let s = samples[ideep];
-                let bb = math::max(s.curv_b, cfg.b_min);
+                let bb =
+                    effective_curvature(s.curv_b, math::max(cfg.b_min, cfg.b_floor * s.curv_a));
                 let hz = hertz::from_load(s.curv_a, bb, load, mat)?;
                 self.l0_global = hz.b;
             }
@@ -733,21 +767,15 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                     for j in 0..nb {
                         let (lo, hi) = if j < k { (j, k) } else { (k, j) };
                         let mut theta = T::ZERO;
-                        let mut ylo = T::MAX;
-                        let mut yhi = -T::MAX;
+                        let mut len = T::ZERO;
                         for q in lo..=hi {
                             let b = self.basins[q];
                             if q < hi {
                                 theta = math::max(theta, b.theta);
                             }
-                            if b.in_contact {
-                                ylo = math::min(ylo, b.ylo);
-                                yhi = math::max(yhi, b.yhi);
-                            }
+                            len += b.len;
                         }
-                        if yhi > ylo {
-                            w_eff = math::max(w_eff, (T::ONE - theta) * T::HALF * (yhi - ylo));
-                        }
+                        w_eff = math::max(w_eff, (T::ONE - theta) * T::HALF * len);
                     }
                     self.l0[k] = f * w_eff;
                 }
@@ -847,15 +875,25 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         if per_basin {
             let mut last = -T::ONE;
+            self.bf[..n].fill(T::ZERO);
             for k in 0..self.nb {
                 let l = self.l0[k];
                 if l != last {
                     boussinesq_filter(&self.y[..n], &self.tmp[..n], l, &mut self.eps[..n]);
                     last = l;
                 }
+                // soft zones: sample i takes (1 − s_i) of its zone's filter and s_i of the next's
                 for i in 0..n {
-                    if usize::from(self.zone[i]) == k {
-                        self.bf[i] = self.eps[i];
+                    let z = usize::from(self.zone[i]);
+                    let w = if z == k {
+                        T::ONE - self.sw[i]
+                    } else if z + 1 == k {
+                        self.sw[i]
+                    } else {
+                        T::ZERO
+                    };
+                    if w > T::ZERO {
+                        self.bf[i] += w * self.eps[i];
                     }
                 }
             }
@@ -869,7 +907,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         for (i, s) in samples.iter().enumerate().take(n) {
             let a = s.curv_a;
-            let b = math::max(self.bf[i], cfg.b_min);
+            let b = effective_curvature(self.bf[i], math::max(cfg.b_min, cfg.b_floor * a));
             self.bf[i] = b;
             let (m, nn, r) = match crate::hertz_table::mnr(a, b) {
                 Some(v) => v,
@@ -954,6 +992,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         let eps_deep = self.eps[ideep];
         self.zref[..n].fill(T::ZERO);
         self.zone[..n].fill(0);
+        self.sw[..n].fill(T::ZERO);
         if matches!(cfg.h_mode, HMode::Eps0) {
             self.e[..n].fill(eps_deep);
         }
@@ -1023,15 +1062,54 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             nb = 1;
         }
         self.nb = nb;
-        // Zones and θ of each link.
-        let mut start = 0usize;
+        // Soft zones (continuous in the data): sample i between the minima of basins k and k+1
+        // gets zone k and the weight s_i of basin k+1 from its barriers to either minimum,
+        // B_L = max z on [imin_k, i], B_R = max z on [i, imin_k+1]:
+        // s_i = clamp(½ + (B_L − B_R)/(2w), 0, 1), w = min(`blend`·δ, prominence of the link) —
+        // ½ at the saddle, 0/1 once the sample lies w below the saddle on its side (so at the
+        // latest at the minima). A hard watershed (the saddle's arg-max
+        // sample) would switch a sample's z_ref and filter length when the arg-max moves by one
+        // sample (a jump of the strip depth by (1 − e)(z_ref,k+1 − z_ref,k)).
+        for i in 0..n {
+            self.zone[i] = 0;
+            self.sw[i] = T::ZERO;
+        }
         for k in 0..nb {
             let b = self.basins[k];
-            let end = if k + 1 < nb { b.isaddle } else { n - 1 };
-            for i in start..=end.min(n - 1) {
+            let lo = if k == 0 { 0 } else { b.imin };
+            let hi = if k + 1 < nb {
+                self.basins[k + 1].imin.min(n - 1)
+            } else {
+                n - 1
+            };
+            for i in lo..=hi {
                 self.zone[i] = k as u8;
+                self.sw[i] = T::ZERO;
             }
-            start = end + 1;
+            if k + 1 < nb && hi > b.imin {
+                let prominence = b.saddle - math::max(b.zmin, self.basins[k + 1].zmin);
+                let wz = math::min(cfg.blend * delta, prominence);
+                // B_R into sw (right to left), then B_L and s (left to right)
+                let mut br = -T::MAX;
+                for i in (b.imin..=hi).rev() {
+                    br = math::max(br, self.z[i]);
+                    self.sw[i] = br;
+                }
+                let mut bl = -T::MAX;
+                for i in b.imin..=hi {
+                    bl = math::max(bl, self.z[i]);
+                    let d = bl - self.sw[i];
+                    self.sw[i] = if wz > T::ZERO {
+                        math::clamp(T::HALF + d / (T::TWO * wz), T::ZERO, T::ONE)
+                    } else if d > T::ZERO {
+                        T::ONE
+                    } else if d < T::ZERO {
+                        T::ZERO
+                    } else {
+                        T::HALF
+                    };
+                }
+            }
             if k + 1 < nb {
                 let nxt = self.basins[k + 1];
                 // How far the link's least-covered sample lies outside the one-region contact set:
@@ -1132,39 +1210,45 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         let eps0_mode = matches!(cfg.h_mode, HMode::Eps0);
         for i in 0..self.n {
-            let b = self.basins[usize::from(self.zone[i]).min(nb - 1)];
-            self.zref[i] = b.zref;
+            let k = usize::from(self.zone[i]).min(nb - 1);
+            let b = self.basins[k];
+            let b1 = self.basins[(k + 1).min(nb - 1)];
+            let s = self.sw[i];
+            self.zref[i] = b.zref + s * (b1.zref - b.zref);
             if eps0_mode {
-                self.e[i] = b.eps0;
+                self.e[i] = b.eps0 + s * (b1.eps0 - b.eps0);
             }
         }
     }
 
-    /// Lateral extent of each basin zone's contact set (interpolated edges).
+    /// Measure of each basin zone's contact set: Σ over its contact samples of the piece
+    /// [lo_i, hi_i] (interpolated edge at the end of a contact run, else the midpoint to the
+    /// neighbour), so a connected set measures edge to edge. Unlike the hull of the set, the measure
+    /// is continuous in the data: an island of contact entering the zone away from the main set
+    /// starts with zero length (a hull would jump by the distance between them and with it l₀).
     fn basin_extents(&mut self, samples: &[StripSample<T>]) {
         for k in 0..self.nb {
-            self.basins[k].in_contact = false;
-            self.basins[k].ylo = T::MAX;
-            self.basins[k].yhi = -T::MAX;
+            self.basins[k].len = T::ZERO;
         }
         let n = self.n;
         for i in 0..n {
             if self.hu[i] > T::ZERO {
                 let k = usize::from(self.zone[i]).min(self.nb - 1);
+                let k1 = (k + 1).min(self.nb - 1);
+                let s = self.sw[i];
                 let lo = if i == 0 || self.hu[i - 1] <= T::ZERO {
                     self.edge_left(i, samples)
                 } else {
-                    self.y[i]
+                    T::HALF * (self.y[i - 1] + self.y[i])
                 };
                 let hi = if i + 1 == n || self.hu[i + 1] <= T::ZERO {
                     self.edge_right(i, samples)
                 } else {
-                    self.y[i]
+                    T::HALF * (self.y[i] + self.y[i + 1])
                 };
-                let b = &mut self.basins[k];
-                b.in_contact = true;
-                b.ylo = math::min(b.ylo, lo);
-                b.yhi = math::max(b.yhi, hi);
+                let piece = math::max(hi - lo, T::ZERO);
+                self.basins[k].len += (T::ONE - s) * piece;
+                self.basins[k1].len += s * piece;
             }
         }
     }

@@ -61,8 +61,8 @@
 //! that approach — the frame/approach fixed point is thereby solved together with the load).
 //! Each patch's normal load N_k is the STRIPES load whose approach equals a_k (STRIPES is
 //! load-controlled; the inverse is found by a safeguarded secant on (ln N, ln δ), where the
-//! relation is nearly linear, N ∝ δ^{3/2} for Hertz), to a tenth of the load-loop tolerance and
-//! warm-started per patch from its last solve of the call. δ_v then solves
+//! relation is nearly linear, N ∝ δ^{3/2} for Hertz), warm-started per patch from its last solve
+//! of the call (its load, approach and local exponent). δ_v then solves
 //! **Σ_k N_k(δ_v) cos δ_k = F_z** (the vertical components; the vertical components of the
 //! tangential forces are neglected, as in seed A and CONTACT's load control on F_z·n), by the
 //! same secant in (ln F, ln δ_v).
@@ -110,8 +110,7 @@ pub struct WheelConfig<T> {
     pub kinematics: Kinematics<T>,
     /// Prescribed creepages for every patch instead of the kinematics (`None`: kinematics).
     pub creepage: Option<Creepage<T>>,
-    /// Relative tolerance on the vertical load (each patch's STRIPES approach meets its geometric
-    /// approach to a tenth of it; default 1e-6 in
+    /// Relative tolerance on the vertical load and on each patch's approach (default 1e-6 in
     /// f64, 1e-3 in f32: f32 geometry resolves track coordinates of ~700 mm to ~5e-5 mm, a few
     /// 1e-4 of a typical approach, so the load found at a given vertical approach is only that
     /// repeatable; the old prescribed-normal-load fixed point stopped at 1e-3 on the approach).
@@ -320,19 +319,10 @@ impl<T: Real> InverseState<T> {
     }
 }
 
-/// Relative tolerance of the inverse STRIPES solve (approach) as a fraction of the load-loop
-/// tolerance: the loads found at one vertical approach then repeat to a small part of the
-/// load-loop tolerance, whatever the first guess (path), so the vertical load is a function of
-/// δ_v to well within that tolerance and the secant on δ_v converges instead of hunting within
-/// the inner tolerance's noise (with the inner tolerance equal to the outer one, some sweep cases
-/// needed 24–37 geometry passes around the solution).
-const INNER_TOL_FRACTION: f64 = 0.1;
-
-/// STRIPES load whose approach equals `a` (mm) on `samples` to `tol_inner` (relative); returns
-/// (load, converged, solves). `state` is the slot's last solve (warm start: the first guess
+/// STRIPES load whose approach equals `a` (mm) on `samples` (relative tolerance `cfg.tol`, then
+/// one secant step to `a` itself); returns (load, converged, solves). `state` is the slot's last solve (warm start: the first guess
 /// follows the slot's last local exponent from its last point, and that point is the secant's
 /// first point); it is updated with every solve.
-#[allow(clippy::too_many_arguments)]
 fn load_for_approach<
     T: Real,
     const NS: usize,
@@ -345,7 +335,6 @@ fn load_for_approach<
     a: T,
     guess: T,
     state: &mut InverseState<T>,
-    tol_inner: T,
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
@@ -372,10 +361,14 @@ fn load_for_approach<
         if !(d1 > T::ZERO) || !math::is_finite(d1) {
             return Err(Error::NonFinite("stripes approach"));
         }
-        if math::abs(d1 - a) <= tol_inner * a {
+        if math::abs(d1 - a) <= cfg.tol * a {
             state.n = n1;
             state.delta = d1;
-            return Ok((n1, sol.converged, it + 1));
+            // the load at `a` itself (one more secant step, no solve): N(a) continuous in `a`
+            // far below the tolerance, so the load loop on δ_v does not see a staircase
+            let (n, p) = loglog_step_inverse(d0, n0, d1, n1, a);
+            state.exponent = p;
+            return Ok((n, sol.converged, it + 1));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
         let (next, p) = loglog_step_inverse(d0, n0, d1, n1, a);
@@ -480,7 +473,6 @@ fn split_load<
                 a,
                 guess,
                 &mut ws.inverse[k],
-                cfg.tol * math::c(INNER_TOL_FRACTION),
                 mat,
                 cfg,
                 &mut ws.pipeline,
