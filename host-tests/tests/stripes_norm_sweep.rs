@@ -463,6 +463,21 @@ fn variants() {
     let variants = [
         ("rec", rec),
         (
+            "rec b_floor 0 (hard clamp)",
+            StripesConfig {
+                b_floor: 0.0,
+                ..rec
+            },
+        ),
+        (
+            "EpsW(0.5) b_floor 0",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(0.5),
+                b_floor: 0.0,
+                ..rec
+            },
+        ),
+        (
             "EpsLocal PF.25",
             StripesConfig {
                 h_mode: HMode::EpsLocal,

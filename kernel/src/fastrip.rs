@@ -62,7 +62,7 @@
 //!   [`m6_parabolic_bound`].
 
 use crate::error::{check_finite, check_positive, Error};
-use crate::fastsim::{march_strip, FastsimSettings, FlexMode, SlipRule};
+use crate::fastsim::{FastsimSettings, FlexMode, March, SlipRule};
 use crate::math::{self, c};
 use crate::patch::{
     CellOut, CellSink, Creepage, Ellipse, Flexibilities, PressureField, StripPatch, Tangential,
@@ -357,62 +357,53 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
     let (g, nu) = (patch.mat.g, patch.mat.nu);
     let dx = patch.dx;
     let margin = set.edge_margin;
+    let rigid = dset.slip == SlipRule::CoulombRigidSlip;
     let mut res = Tangential::<T, S>::default();
     for j in 0..S {
         let s = patch.strips[j];
         if s.a <= margin {
             continue;
         }
-        // Direction pass (FASTSIM).
-        let (mut fl, _) = dset.strip_flex(&s.flex, cr, g, s.c11, s.c22);
-        let mut pf = [[T::ZERO; 2]; C];
-        let mut lead_slip: Option<bool> = None;
-        let run = |fl: &Flexibilities<T>, pf: &mut [[T; 2]; C], lead: &mut Option<bool>| {
-            march_strip(
-                patch,
-                j,
-                pressure,
-                cr,
-                mu,
-                &dset.bound,
-                dset.c_off,
-                dset.slip,
-                fl,
-                margin,
-                |i, o| {
-                    if let Some(v) = pf.get_mut(i) {
-                        *v = [o.px, o.py];
-                    }
-                    if lead.is_none() {
-                        *lead = Some(o.slip);
-                    }
-                },
-            );
-        };
-        run(&fl, &mut pf, &mut lead_slip);
-        if let (Some(sqrt_ab), Some(true)) = (set.leading_slip_retry, lead_slip) {
-            let lt = s.flex.single(cr, sqrt_ab);
-            fl = Flexibilities {
-                l1: lt,
-                l2: lt,
-                l3: lt,
-            };
-            let mut dummy = None;
-            run(&fl, &mut pf, &mut dummy);
-        }
+        let half = s.a - margin;
         let ss = strip_solution(&s, cr, mu, g, nu, set.lambda, set.large_spin);
-        // Optional bound check over the adhesion zone.
+        // Adhesion-zone tractions, computed once (by the bound check, if any) and reused.
+        let mut adh = [[T::ZERO; 2]; C];
+        let mut cached = false;
+        // Optional bound check over the adhesion zone (independent of the direction pass).
         let mut discard = false;
-        if set.bound_check != BoundCheck::Off {
-            for i in 0..C {
+        if set.bound_check != BoundCheck::Off && !ss.full_slip {
+            cached = true;
+            for (i, slot) in adh.iter_mut().enumerate() {
                 let x = patch.x(i);
                 let xb = x - s.xc;
-                let inside = math::abs(xb) < s.a - margin;
+                let inside = math::abs(xb) < half;
                 if !inside {
                     continue;
                 }
                 if let Some((px, py)) = adhesion_traction(&ss, s.a, xb) {
-                    let mag = math::hypot(px, py);
+                    *slot = [px, py];
+                    // Clearly admissible (|p|² below the squared limit by a margin of 32ε that
+                    // covers the roundings of both sides): the decision of the exact test
+                    // below without its square roots.
+                    let m2 = px * px + py * py;
+                    let lim2 = match set.bound_check {
+                        BoundCheck::Local => {
+                            let l = mu * pressure.pn(j, i, x, &s);
+                            l * l
+                        }
+                        BoundCheck::Strip => {
+                            let u = xb / s.a;
+                            let mp = mu * s.p_hat;
+                            mp * mp * math::max(T::ZERO, T::ONE - u * u)
+                        }
+                        BoundCheck::Peak(l) => l * l,
+                        BoundCheck::Off => T::MAX,
+                    };
+                    let margin2 = T::ONE + c::<T>(32.0) * T::EPSILON;
+                    if lim2 >= T::MIN_POSITIVE / T::EPSILON && m2 * margin2 < lim2 {
+                        continue;
+                    }
+                    let mag = math::hypot_fast(px, py);
                     let lim = match set.bound_check {
                         BoundCheck::Local => mu * pressure.pn(j, i, x, &s),
                         BoundCheck::Strip => {
@@ -424,98 +415,121 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
                     };
                     if mag > lim {
                         discard = true;
+                        break;
                     }
                 }
             }
         }
-        let mut tot = Totals::default();
-        if discard {
-            march_strip(
-                patch,
-                j,
-                pressure,
-                cr,
-                mu,
-                &dset.bound,
-                dset.c_off,
-                dset.slip,
-                &fl,
-                margin,
-                |i, o| {
-                    tot.add(o);
-                    sink.cell(j, i, o);
-                },
-            );
+        // One pass, leading → trailing edge: the direction pass (FASTSIM) cell by cell, and
+        // FaStrip's traction of the same cell (or FASTSIM's own if the strip was discarded).
+        let (fl0, _) = dset.strip_flex(&s.flex, cr, g, s.c11, s.c22);
+        let mut fl = fl0;
+        let new_march = |fl: &Flexibilities<T>| {
+            March::new(&s, dx, cr, mu, &dset.bound, dset.c_off, dset.slip, fl)
+        };
+        let mut march = new_march(&fl);
+        let mut first = true;
+        let area = dx * s.dy;
+        let wx = cr.xi - cr.phi * s.y;
+        // Slip velocity on the same rigid slip as the direction pass's slipping cells.
+        let mut wtx = if rigid {
+            wx
         } else {
-            let area = dx * s.dy;
-            // Slip velocity on the same rigid slip as the direction pass's slipping cells.
-            let rigid = dset.slip == SlipRule::CoulombRigidSlip;
-            let wtx = if rigid {
-                cr.xi - cr.phi * s.y
-            } else {
-                cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y
-            };
-            let mut up = [T::ZERO; 2]; // u of the upstream neighbour
-            for ii in 0..C {
-                let i = C - 1 - ii;
-                let x = patch.x(i);
-                let xb = x - s.xc;
-                let inside = math::abs(xb) < s.a - margin;
-                if !inside {
-                    up = [T::ZERO; 2];
-                    continue;
-                }
-                let pn = pressure.pn(j, i, x, &s);
-                let wty = if rigid {
-                    cr.eta + cr.phi * x
-                } else {
-                    cr.eta + (fl.l2 / fl.l3) * cr.phi * (x + dset.c_off * dx)
-                };
-                let wx = cr.xi - cr.phi * s.y;
-                let wy = cr.eta + cr.phi * x;
-                let (px, py, slip, bound) = match adhesion_traction(&ss, s.a, xb) {
-                    Some((px, py)) => (px, py, false, mu * pn),
-                    None => {
-                        let gb = mu * pn;
-                        let [fx, fy] = pf.get(i).copied().unwrap_or([T::ZERO; 2]);
-                        let m = math::hypot(fx, fy);
-                        let (dxn, dyn_) = if m >= c(1e-10) {
-                            (fx / m, fy / m)
-                        } else {
-                            let mw = math::hypot(wx, wy);
-                            if mw > T::ZERO {
-                                (-wx / mw, -wy / mw)
-                            } else {
-                                (T::ZERO, T::ZERO)
-                            }
-                        };
-                        (gb * dxn, gb * dyn_, true, gb)
-                    }
-                };
-                let u = [fl.l1 * px, fl.l2 * py];
-                let (sx, sy) = if slip {
-                    (wtx + (u[0] - up[0]) / dx, wty + (u[1] - up[1]) / dx)
-                } else {
-                    (T::ZERO, T::ZERO)
-                };
-                up = u;
-                let o = CellOut {
-                    x,
-                    y: s.y,
-                    area,
-                    pn,
-                    bound,
-                    px,
-                    py,
-                    slip,
-                    sx,
-                    sy,
-                    wx,
-                    wy,
-                };
-                tot.add(&o);
-                sink.cell(j, i, &o);
+            cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y
+        };
+        let mut up = [T::ZERO; 2]; // u of the upstream neighbour
+        let mut tot = Totals::default();
+        for ii in 0..C {
+            let i = C - 1 - ii;
+            let x = patch.x(i);
+            let xb = x - s.xc;
+            let inside = math::abs(xb) < half;
+            if !inside {
+                march.reset();
+                up = [T::ZERO; 2];
+                continue;
             }
+            let pn = pressure.pn(j, i, x, &s);
+            let mut dir = march.cell(x, pn);
+            if first {
+                first = false;
+                // CONTACT M=6: the leading contact cell slips → the pass with L_t.
+                if let (Some(sqrt_ab), true) = (set.leading_slip_retry, dir.slip) {
+                    let lt = s.flex.single(cr, sqrt_ab);
+                    fl = Flexibilities {
+                        l1: lt,
+                        l2: lt,
+                        l3: lt,
+                    };
+                    march = new_march(&fl);
+                    dir = march.cell(x, pn);
+                    if !rigid {
+                        wtx = cr.xi - (fl.l1 / fl.l3) * cr.phi * s.y;
+                    }
+                }
+            }
+            if discard {
+                tot.add(&dir);
+                sink.cell(j, i, &dir);
+                continue;
+            }
+            let wy = cr.eta + cr.phi * x;
+            let wty = if rigid {
+                wy
+            } else {
+                cr.eta + (fl.l2 / fl.l3) * cr.phi * (x + dset.c_off * dx)
+            };
+            let at = if cached {
+                let zone = xb > T::TWO * ss.d - s.a;
+                match adh.get(i) {
+                    Some(&[px, py]) if zone => Some((px, py)),
+                    _ => None,
+                }
+            } else {
+                adhesion_traction(&ss, s.a, xb)
+            };
+            let (px, py, slip, bound) = match at {
+                Some((px, py)) => (px, py, false, mu * pn),
+                None => {
+                    let gb = mu * pn;
+                    let (fx, fy) = (dir.px, dir.py);
+                    let m = math::hypot_fast(fx, fy);
+                    let (dxn, dyn_) = if m >= c(1e-10) {
+                        (fx / m, fy / m)
+                    } else {
+                        let mw = math::hypot_fast(wx, wy);
+                        if mw > T::ZERO {
+                            (-wx / mw, -wy / mw)
+                        } else {
+                            (T::ZERO, T::ZERO)
+                        }
+                    };
+                    (gb * dxn, gb * dyn_, true, gb)
+                }
+            };
+            let u = [fl.l1 * px, fl.l2 * py];
+            let (sx, sy) = if slip {
+                (wtx + (u[0] - up[0]) / dx, wty + (u[1] - up[1]) / dx)
+            } else {
+                (T::ZERO, T::ZERO)
+            };
+            up = u;
+            let o = CellOut {
+                x,
+                y: s.y,
+                area,
+                pn,
+                bound,
+                px,
+                py,
+                slip,
+                sx,
+                sy,
+                wx,
+                wy,
+            };
+            tot.add(&o);
+            sink.cell(j, i, &o);
         }
         res.strips[j] = tot;
         res.total.merge(&tot);

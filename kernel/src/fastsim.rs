@@ -12,8 +12,8 @@
 use crate::error::Error;
 use crate::math;
 use crate::patch::{
-    CellOut, CellSink, Creepage, Flexibilities, PressureField, StripPatch, Tangential, Totals,
-    TractionBound,
+    CellOut, CellSink, Creepage, Flexibilities, PressureField, Strip, StripPatch, Tangential,
+    Totals, TractionBound,
 };
 use crate::Real;
 
@@ -69,40 +69,62 @@ pub enum SlipRule {
 }
 
 /// Iteration cap of the per-cell Newton solve of [`SlipRule::Coulomb`] (it converges
-/// quadratically from a bracketing start; 2–5 steps are typical).
+/// quadratically from a bracketing start; 1–3 steps are typical).
 pub const COULOMB_MAX_ITER: usize = 30;
 
 /// The traction of a slipping cell under [`SlipRule::Coulomb`]: bound `g` (MPa), diagonal cell
 /// compliances `c1` = L1/δx, `c2` = L2/δx (mm/MPa per mm) and the slip with the cell's own traction
 /// removed, `v` (dimensionless). Requires |C⁻¹v| > g (the adhesion trial failed). Returns p.
+///
+/// σ = |s| is the root of f(σ) = Σ v_i²/(σ + g c_i)² − 1 (decreasing, convex). Newton starts from
+/// σ₀ = |v| − (v_x² g c1 + v_y² g c2)/|v|², a lower bound of the root by Jensen's inequality
+/// (exact when c1 = c2), and so climbs monotonically; it stops once a step is below
+/// ½√ε (σ + g min c_i), after which the remaining error is below 0.4 ε (σ + g min c_i)
+/// (|f''/2f'| ≤ 1.5/(σ + g min c_i)), so |p| = g to within about 2ε without normalising;
+/// otherwise (iteration cap, NaN) p is normalised onto |p| = g.
 #[inline]
 pub(crate) fn coulomb_cell<T: Real>(g: T, c1: T, c2: T, vx: T, vy: T) -> (T, T) {
     if g <= T::ZERO {
         return (T::ZERO, T::ZERO);
     }
     let (gc1, gc2) = (g * c1, g * c2);
-    // Lower bound of the root: f(σ) ≥ 0 there.
-    let mut sig = math::max(T::ZERO, math::hypot(vx, vy) - math::max(gc1, gc2));
-    let tol = math::c::<T>(8.0) * T::EPSILON;
+    let (vx2, vy2) = (vx * vx, vy * vy);
+    let v2 = vx2 + vy2;
+    // Jensen's lower bound of the root (the cruder |v| − max g c_i if it is not finite).
+    let mut mean = math::max(gc1, gc2);
+    let jensen = (vx2 * gc1 + vy2 * gc2) / v2;
+    if math::is_finite(jensen) {
+        mean = math::min(mean, jensen);
+    }
+    let mut sig = math::max(T::ZERO, math::hypot_fast(vx, vy) - mean);
+    let tol = T::HALF * math::sqrt(T::EPSILON);
+    let gmin = math::min(gc1, gc2);
+    let mut converged = false;
     for _ in 0..COULOMB_MAX_ITER {
-        let (d1, d2) = (sig + gc1, sig + gc2);
-        let (tx, ty) = (vx / d1, vy / d2);
-        let f = tx * tx + ty * ty - T::ONE;
-        // f'(σ) = −2(v_x²/d1³ + v_y²/d2³) < 0.
-        let fp = -T::TWO * (tx * tx / d1 + ty * ty / d2);
+        let (r1, r2) = (T::ONE / (sig + gc1), T::ONE / (sig + gc2));
+        let (tx, ty) = (vx * r1, vy * r2);
+        let (tx2, ty2) = (tx * tx, ty * ty);
+        let f = tx2 + ty2 - T::ONE;
+        // −f'(σ)/2 = v_x²/d1³ + v_y²/d2³ > 0.
+        let fp2 = tx2 * r1 + ty2 * r2;
         // NaN-safe: stop unless f > 0 and f' < 0 are both true.
-        let descending = fp < T::ZERO && f > T::ZERO;
+        let descending = fp2 > T::ZERO && f > T::ZERO;
         if !descending {
             break;
         }
-        let step = -f / fp;
+        let step = f / (T::TWO * fp2);
         sig += step;
-        if step <= tol * (sig + math::min(gc1, gc2)) {
+        if step <= tol * (sig + gmin) {
+            converged = true;
             break;
         }
     }
     let (tx, ty) = (-vx / (sig + gc1), -vy / (sig + gc2));
-    let m = math::hypot(tx, ty);
+    if converged {
+        // |t| = 1 to within 2ε: no normalisation needed.
+        return (g * tx, g * ty);
+    }
+    let m = math::hypot_fast(tx, ty);
     if m > T::ZERO && math::is_finite(m) {
         (g * tx / m, g * ty / m)
     } else {
@@ -205,6 +227,148 @@ impl<T: Real> FastsimSettings<T> {
     }
 }
 
+/// The FASTSIM march along one strip (leading → trailing edge), one cell per [`March::cell`]
+/// call, with the strip's constants hoisted out of the cell loop. FaStrip runs its direction
+/// pass through it, fused with its own output pass.
+pub(crate) struct March<T> {
+    mu: T,
+    bound: TractionBound<T>,
+    rule: SlipRule,
+    strip: Strip<T>,
+    dx: T,
+    area: T,
+    l1: T,
+    l2: T,
+    /// w̃_x = ξ − (L1/L3)φ y.
+    wtx: T,
+    /// δx w̃_x / L1.
+    kx: T,
+    /// (L2/L3)φ.
+    k2: T,
+    /// c_off δx.
+    coff_dx: T,
+    /// True rigid slip w_x = ξ − φ y.
+    wx: T,
+    eta: T,
+    phi: T,
+    /// Cell compliances L1/δx, L2/δx.
+    c1: T,
+    c2: T,
+    ppx: T,
+    ppy: T,
+}
+
+impl<T: Real> March<T> {
+    /// The march of strip `s` with flexibilities `fl` on cells of length `dx`.
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub(crate) fn new(
+        s: &Strip<T>,
+        dx: T,
+        cr: &Creepage<T>,
+        mu: T,
+        bound: &TractionBound<T>,
+        c_off: T,
+        rule: SlipRule,
+        fl: &Flexibilities<T>,
+    ) -> Self {
+        let (l1, l2, l3) = (fl.l1, fl.l2, fl.l3);
+        let wtx = cr.xi - (l1 / l3) * cr.phi * s.y;
+        Self {
+            mu,
+            bound: *bound,
+            rule,
+            strip: *s,
+            dx,
+            area: dx * s.dy,
+            l1,
+            l2,
+            wtx,
+            kx: dx * wtx / l1,
+            k2: (l2 / l3) * cr.phi,
+            coff_dx: c_off * dx,
+            wx: cr.xi - cr.phi * s.y,
+            eta: cr.eta,
+            phi: cr.phi,
+            c1: l1 / dx,
+            c2: l2 / dx,
+            ppx: T::ZERO,
+            ppy: T::ZERO,
+        }
+    }
+
+    /// An exterior cell: the march restarts with zero traction upstream.
+    #[inline]
+    pub(crate) fn reset(&mut self) {
+        self.ppx = T::ZERO;
+        self.ppy = T::ZERO;
+    }
+
+    /// The next contact cell (centre `x`, pressure `pn`).
+    #[inline(always)]
+    pub(crate) fn cell(&mut self, x: T, pn: T) -> CellOut<T> {
+        let s = &self.strip;
+        let (ppx, ppy) = (self.ppx, self.ppy);
+        let g = self.bound.eval(self.mu, x, s, pn);
+        let xt = x + self.coff_dx;
+        let wty = self.eta + self.k2 * xt;
+        let phx = ppx - self.kx;
+        let phy = ppy - self.dx * wty / self.l2;
+        let wy = self.eta + self.phi * x;
+        // |p^H| ≤ g without the square root where |p^H|² is clearly below g² (the margin
+        // 8ε covers the roundings: the decision is that of `hypot_fast(p^H) <= g`).
+        let m2 = phx * phx + phy * phy;
+        let gg = g * g;
+        let clearly_in =
+            gg >= T::MIN_POSITIVE && m2 < gg * (T::ONE - math::c::<T>(8.0) * T::EPSILON);
+        let (px, py, slip, sx, sy) = if clearly_in {
+            (phx, phy, false, T::ZERO, T::ZERO)
+        } else {
+            let mag = math::hypot_fast(phx, phy);
+            if mag <= g {
+                (phx, phy, false, T::ZERO, T::ZERO)
+            } else {
+                let (c1, c2) = (self.c1, self.c2);
+                let (px, py) = match self.rule {
+                    SlipRule::Clip => {
+                        let f = g / mag;
+                        (phx * f, phy * f)
+                    }
+                    SlipRule::Coulomb => {
+                        coulomb_cell(g, c1, c2, self.wtx - c1 * ppx, wty - c2 * ppy)
+                    }
+                    SlipRule::CoulombRigidSlip => {
+                        coulomb_cell(g, c1, c2, self.wx - c1 * ppx, wy - c2 * ppy)
+                    }
+                };
+                (
+                    px,
+                    py,
+                    true,
+                    self.wtx + self.l1 * (px - ppx) / self.dx,
+                    wty + self.l2 * (py - ppy) / self.dx,
+                )
+            }
+        };
+        self.ppx = px;
+        self.ppy = py;
+        CellOut {
+            x,
+            y: s.y,
+            area: self.area,
+            pn,
+            bound: g,
+            px,
+            py,
+            slip,
+            sx,
+            sy,
+            wx: self.wx,
+            wy,
+        }
+    }
+}
+
 /// Marches strip j (leading → trailing edge) with flexibilities `fl`, calling `emit(i, &cell)` for
 /// every contact cell. Cells with |x − x_c| ≥ a_j − `margin` are exterior.
 #[allow(clippy::too_many_arguments)]
@@ -224,71 +388,19 @@ pub(crate) fn march_strip<T: Real, const S: usize, const C: usize, P: PressureFi
     let Some(s) = patch.strips.get(j) else {
         return;
     };
-    let dx = patch.dx;
-    let area = dx * s.dy;
-    let (l1, l2, l3) = (fl.l1, fl.l2, fl.l3);
-    let wtx = cr.xi - (l1 / l3) * cr.phi * s.y;
-    let mut ppx = T::ZERO;
-    let mut ppy = T::ZERO;
+    let mut m = March::new(s, patch.dx, cr, mu, bound, c_off, rule, fl);
+    let half = s.a - margin;
     for ii in 0..C {
         let i = C - 1 - ii;
         let x = patch.x(i);
-        let inside = math::abs(x - s.xc) < s.a - margin;
+        let inside = math::abs(x - s.xc) < half;
         if !inside {
-            ppx = T::ZERO;
-            ppy = T::ZERO;
+            m.reset();
             continue;
         }
         let pn = pressure.pn(j, i, x, s);
-        let g = bound.eval(mu, x, s, pn);
-        let xt = x + c_off * dx;
-        let wty = cr.eta + (l2 / l3) * cr.phi * xt;
-        let phx = ppx - dx * wtx / l1;
-        let phy = ppy - dx * wty / l2;
-        let mag = math::hypot(phx, phy);
-        let (px, py, slip, sx, sy) = if mag <= g {
-            (phx, phy, false, T::ZERO, T::ZERO)
-        } else {
-            let (px, py) = match rule {
-                SlipRule::Clip => {
-                    let f = g / mag;
-                    (phx * f, phy * f)
-                }
-                SlipRule::Coulomb => {
-                    let (c1, c2) = (l1 / dx, l2 / dx);
-                    coulomb_cell(g, c1, c2, wtx - c1 * ppx, wty - c2 * ppy)
-                }
-                SlipRule::CoulombRigidSlip => {
-                    let (c1, c2) = (l1 / dx, l2 / dx);
-                    let (wx, wy) = (cr.xi - cr.phi * s.y, cr.eta + cr.phi * x);
-                    coulomb_cell(g, c1, c2, wx - c1 * ppx, wy - c2 * ppy)
-                }
-            };
-            (
-                px,
-                py,
-                true,
-                wtx + l1 * (px - ppx) / dx,
-                wty + l2 * (py - ppy) / dx,
-            )
-        };
-        let out = CellOut {
-            x,
-            y: s.y,
-            area,
-            pn,
-            bound: g,
-            px,
-            py,
-            slip,
-            sx,
-            sy,
-            wx: cr.xi - cr.phi * s.y,
-            wy: cr.eta + cr.phi * x,
-        };
+        let out = m.cell(x, pn);
         emit(i, &out);
-        ppx = px;
-        ppy = py;
     }
 }
 

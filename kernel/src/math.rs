@@ -80,6 +80,20 @@ pub fn asinh<T: Real>(x: T) -> T {
 pub fn hypot<T: Real>(x: T, y: T) -> T {
     T::hypot(x, y)
 }
+/// `sqrt(x² + y²)` evaluated as written (two products, a sum, one square root) when x² + y² is a
+/// finite normal number, else [`hypot`] (overflow, underflow, NaN). Within about one ulp of
+/// [`hypot`] but not always bit-identical to it; it costs one square root instead of libm's
+/// scaled `hypot` (which for `f32` works in `f64`: soft-float on a Cortex-M4F). For the per-cell
+/// loops of FASTSIM/FaStrip and the wear sink.
+#[inline(always)]
+pub fn hypot_fast<T: Real>(x: T, y: T) -> T {
+    let s = x * x + y * y;
+    if s >= T::MIN_POSITIVE && s <= T::MAX {
+        T::sqrt(s)
+    } else {
+        T::hypot(x, y)
+    }
+}
 /// Largest integer ≤ x.
 #[inline(always)]
 pub fn floor<T: Real>(x: T) -> T {
