@@ -314,7 +314,16 @@ fn fine_regions() {
     let load: f64 = std::env::var("LOADN")
         .map(|s| s.parse().unwrap())
         .unwrap_or(83_300.0);
-    let mut ws = Box::new(wrc_kernel::wheel::DefaultWheelWorkspace::<f64>::new());
+    let mut ws = Box::new(wrc_kernel::wheel::WheelWorkspace::<
+        f64,
+        4,
+        128,
+        256,
+        4,
+        128,
+        32,
+        512,
+    >::new());
     let n = ((to - from) / step).round() as usize;
     for k in 0..=n {
         let dy = from + step * k as f64;
@@ -323,6 +332,9 @@ fn fine_regions() {
         let mut cfg = c.config();
         if let Ok(b) = std::env::var("BFLOOR") {
             cfg.pipeline.stripes.b_floor = b.parse().unwrap();
+        }
+        if let Ok(b) = std::env::var("STRIPS") {
+            cfg.pipeline.strips_per_region = b.parse().unwrap();
         }
         let res =
             wrc_kernel::wheel::solve_wheel(&g, load, &Material::steel(), &cfg, &mut ws, &mut ())
