@@ -407,7 +407,9 @@ fn exact_tangential_wheel_rail_matches_the_library() {
         back_to_back: 1353.0,
         ..TrackSetup::standard()
     };
-    let pose = WheelsetPose::from_contact(6.0, 7.2e-3, 0.0);
+    // the CLI's own conversion of --yaw 7.2 (mrad): 7.2 * 1e-3 is one ulp off the literal 7.2e-3,
+    // and "to rounding" needs the same input bits
+    let pose = WheelsetPose::from_contact(6.0, 7.2 * 1e-3, 0.0);
     let g = WheelRail::place(&*r, &*w, &setup, &pose, Side::Right, 0.05).unwrap();
     let mat = wrc_kernel::Material::<f64>::identical(205_900.0, 0.28).unwrap();
     let speed = 200.0 / 3.6 * 1e3;

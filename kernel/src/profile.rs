@@ -147,7 +147,8 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
             T::ZERO
         };
         let last = self.len.saturating_sub(2);
-        let i = (T::to_f64(math::floor(t)) as usize).min(last);
+        // t ∈ [0, len − 1] here: truncation is the floor
+        let i = (T::to_f64(t) as usize).min(last);
         (i, t - T::from_usize(i))
     }
 
@@ -170,28 +171,19 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         }
     }
 
-    /// Position and unit tangent (cos β, sin β) at `t` without the angle (no trigonometry when
-    /// the segment is cached).
-    pub fn hermite(&self, t: T, cache: &mut SegmentCache<T>) -> HermitePoint<T> {
-        if self.len < 2 {
-            return HermitePoint {
-                y: T::ZERO,
-                z: T::ZERO,
-                tc: T::ONE,
-                ts: T::ZERO,
-                curvature: T::ZERO,
-            };
-        }
+    /// Segment index and local coordinate of `t` (as [`Self::segment`]), with the segment's node
+    /// tangents loaded into `cache`. A node evaluated right after its left segment (a root
+    /// bracket [k, k+1]) is that segment's end, u = 1: the same values (Hermite position, node
+    /// tangent, node curvature) without refilling the cache. Needs `len ≥ 2`.
+    #[inline]
+    fn segment_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (usize, T) {
         let (mut i, mut u) = self.segment(t);
-        // A node evaluated right after its left segment (a root bracket [k, k+1]) is that
-        // segment's end, u = 1: the same values (Hermite position, node tangent, node curvature)
-        // without refilling the cache.
         if u == T::ZERO && i > 0 && cache.valid && cache.i + 1 == i {
             i -= 1;
             u = T::ONE;
         }
-        let j = i + 1;
         if !cache.valid || cache.i != i {
+            let j = i + 1;
             cache.i = i;
             cache.valid = true;
             cache.c0 = math::cos(self.angle[i]);
@@ -199,6 +191,13 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
             cache.c1 = math::cos(self.angle[j]);
             cache.s1 = math::sin(self.angle[j]);
         }
+        (i, u)
+    }
+
+    /// Cubic Hermite position on segment `i` at `u` with the node tangents in `cache`.
+    #[inline]
+    fn position(&self, i: usize, u: T, cache: &SegmentCache<T>) -> (T, T) {
+        let j = i + 1;
         let (c0, s0, c1, s1) = (cache.c0, cache.s0, cache.c1, cache.s1);
         let (y0, z0, y1, z1) = (self.y[i], self.z[i], self.y[j], self.z[j]);
         let h = self.ds;
@@ -212,6 +211,40 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         let h11 = u3 - u2;
         let y = h00 * y0 + h10 * h * c0 + h01 * y1 + h11 * h * c1;
         let z = h00 * z0 + h10 * h * s0 + h01 * z1 + h11 * h * s1;
+        (y, z)
+    }
+
+    /// Position (y, z) at `t` only — the values of [`Self::hermite`] without the tangent (what
+    /// root searches on a curve need).
+    pub fn hermite_pos(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
+        if self.len < 2 {
+            return (T::ZERO, T::ZERO);
+        }
+        let (i, u) = self.segment_cached(t, cache);
+        self.position(i, u, cache)
+    }
+
+    /// Position and unit tangent (cos β, sin β) at `t` without the angle (no trigonometry when
+    /// the segment is cached).
+    pub fn hermite(&self, t: T, cache: &mut SegmentCache<T>) -> HermitePoint<T> {
+        if self.len < 2 {
+            return HermitePoint {
+                y: T::ZERO,
+                z: T::ZERO,
+                tc: T::ONE,
+                ts: T::ZERO,
+                curvature: T::ZERO,
+            };
+        }
+        let (i, u) = self.segment_cached(t, cache);
+        let j = i + 1;
+        let (c0, s0, c1, s1) = (cache.c0, cache.s0, cache.c1, cache.s1);
+        let (y0, z0, y1, z1) = (self.y[i], self.z[i], self.y[j], self.z[j]);
+        let h = self.ds;
+        let (y, z) = self.position(i, u, cache);
+        let u2 = u * u;
+        let two = T::TWO;
+        let three = math::c::<T>(3.0);
         let six = math::c::<T>(6.0);
         let d00 = six * u2 - six * u;
         let d10 = three * u2 - math::c::<T>(4.0) * u + T::ONE;

@@ -61,7 +61,8 @@
 //! that approach — the frame/approach fixed point is thereby solved together with the load).
 //! Each patch's normal load N_k is the STRIPES load whose approach equals a_k (STRIPES is
 //! load-controlled; the inverse is found by a safeguarded secant on (ln N, ln δ), where the
-//! relation is nearly linear, N ∝ δ^{3/2} for Hertz). δ_v then solves
+//! relation is nearly linear, N ∝ δ^{3/2} for Hertz), warm-started per patch from its last solve
+//! of the call (its load, approach and local exponent). δ_v then solves
 //! **Σ_k N_k(δ_v) cos δ_k = F_z** (the vertical components; the vertical components of the
 //! tangential forces are neglected, as in seed A and CONTACT's load control on F_z·n), by the
 //! same secant in (ln F, ln δ_v).
@@ -204,6 +205,8 @@ pub struct WheelWorkspace<
     pub pipeline: Workspace<T, NS, NR, S, C, SS>,
     loads: [T; K],
     ratio: [T; K],
+    /// Warm start of each patch slot's inverse STRIPES solve (valid within one call only).
+    inverse: [InverseState<T>; K],
     solves: u32,
     geometry_calls: u32,
     /// Local exponent of F(δ_v) of the last secant step (first step of the next split).
@@ -234,6 +237,7 @@ impl<
             pipeline: Workspace::new(),
             loads: [T::ZERO; K],
             ratio: [T::ZERO; K],
+            inverse: [InverseState::cold(); K],
             solves: 0,
             geometry_calls: 0,
             exponent: math::c(1.5),
@@ -296,7 +300,29 @@ fn loglog_step<T: Real>(x0: T, y0: T, x1: T, y1: T, target: T, p0: T) -> (T, T) 
     (x1 * math::exp(step), p)
 }
 
-/// STRIPES load whose approach equals `a` (mm) on `samples`; returns (load, converged, solves).
+/// Last STRIPES solve of a patch slot: load N (N), its approach δ (mm) and the local exponent
+/// d ln N / d ln δ of the last secant (the warm start of the next inverse solve of the slot).
+#[derive(Clone, Copy, Debug)]
+struct InverseState<T> {
+    n: T,
+    delta: T,
+    exponent: T,
+}
+
+impl<T: Real> InverseState<T> {
+    const fn cold() -> Self {
+        InverseState {
+            n: T::ZERO,
+            delta: T::ZERO,
+            exponent: T::ZERO,
+        }
+    }
+}
+
+/// STRIPES load whose approach equals `a` (mm) on `samples` (relative tolerance `cfg.tol`, then
+/// one secant step to `a` itself); returns (load, converged, solves). `state` is the slot's last solve (warm start: the first guess
+/// follows the slot's last local exponent from its last point, and that point is the secant's
+/// first point); it is updated with every solve.
 fn load_for_approach<
     T: Real,
     const NS: usize,
@@ -308,12 +334,27 @@ fn load_for_approach<
     samples: &[StripSample<T>],
     a: T,
     guess: T,
+    state: &mut InverseState<T>,
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
 ) -> Result<(T, bool, u32), Error> {
-    let mut n1 = guess;
-    let (mut n0, mut d0) = (T::ZERO, T::ZERO);
+    let warm = state.n > T::ZERO && state.delta > T::ZERO && state.exponent > T::ZERO;
+    let (mut n0, mut d0) = if warm {
+        (state.n, state.delta)
+    } else {
+        (T::ZERO, T::ZERO)
+    };
+    let mut n1 = if warm {
+        let step = math::clamp(
+            state.exponent * (math::ln(a) - math::ln(state.delta)),
+            math::c(-4.0),
+            math::c(4.0),
+        );
+        state.n * math::exp(step)
+    } else {
+        guess
+    };
     for it in 0..MAX_INNER {
         let sol = ws.stripes.solve(samples, n1, mat, &cfg.pipeline.stripes)?;
         let d1 = sol.delta;
@@ -321,26 +362,30 @@ fn load_for_approach<
             return Err(Error::NonFinite("stripes approach"));
         }
         if math::abs(d1 - a) <= cfg.tol * a {
+            state.n = n1;
+            state.delta = d1;
             // the load at `a` itself (one more secant step, no solve): N(a) continuous in `a`
             // far below the tolerance, so the load loop on δ_v does not see a staircase
-            return Ok((
-                loglog_step_inverse(d0, n0, d1, n1, a),
-                sol.converged,
-                it + 1,
-            ));
+            let (n, p) = loglog_step_inverse(d0, n0, d1, n1, a);
+            state.exponent = p;
+            return Ok((n, sol.converged, it + 1));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
-        let next = loglog_step_inverse(d0, n0, d1, n1, a);
+        let (next, p) = loglog_step_inverse(d0, n0, d1, n1, a);
+        state.exponent = p;
         n0 = n1;
         d0 = d1;
         n1 = next;
     }
+    state.n = n0;
+    state.delta = d0;
     Ok((n1, false, MAX_INNER))
 }
 
 /// The inverse relation N(δ): secant on (ln δ, ln N) from the last two solves, exponent 1.5
 /// (Hertz) for the first step.
-fn loglog_step_inverse<T: Real>(d0: T, n0: T, d1: T, n1: T, a: T) -> T {
+/// Returns the next load and the exponent used.
+fn loglog_step_inverse<T: Real>(d0: T, n0: T, d1: T, n1: T, a: T) -> (T, T) {
     let mut p = math::c::<T>(1.5);
     if d0 > T::ZERO && n0 > T::ZERO && d0 != d1 {
         let s = (math::ln(n1) - math::ln(n0)) / (math::ln(d1) - math::ln(d0));
@@ -353,7 +398,7 @@ fn loglog_step_inverse<T: Real>(d0: T, n0: T, d1: T, n1: T, a: T) -> T {
         math::c(-4.0),
         math::c(4.0),
     );
-    n1 * math::exp(step)
+    (n1 * math::exp(step), p)
 }
 
 /// e_y,z of a patch: the vertical component of its lateral axis (−sin δ right, +sin δ left).
@@ -423,7 +468,15 @@ fn split_load<
                 continue;
             }
             let n = samples_of(&ws.patches, k, &mut ws.samples);
-            match load_for_approach(&ws.samples[..n], a, guess, mat, cfg, &mut ws.pipeline) {
+            match load_for_approach(
+                &ws.samples[..n],
+                a,
+                guess,
+                &mut ws.inverse[k],
+                mat,
+                cfg,
+                &mut ws.pipeline,
+            ) {
                 Ok((nk, ok, it)) => {
                     ws.solves += it;
                     ws.loads[k] = nk;
@@ -559,6 +612,7 @@ fn solve<
     let main_only = matches!(target, Target::MainNormal(_));
     ws.ratio = [T::ZERO; K];
     ws.loads = [T::ZERO; K];
+    ws.inverse = [InverseState::cold(); K];
     ws.solves = 0;
     ws.geometry_calls = 0;
     ws.exponent = math::c(1.5);

@@ -654,6 +654,38 @@ pub(crate) fn solve_s<T: Real, F: Fn(T) -> (T, T)>(
     t_hint: T,
     s: T,
 ) -> Option<T> {
+    solve_s_nodes(pos, fr, len, t_hint, s, &Cell::new(NodeS::new()))
+}
+
+/// Tangential coordinates s(t_k) of the last few curve nodes evaluated in one frame (a small
+/// direct-mapped cache): consecutive root searches on one curve in one frame (the samples of a
+/// patch, the minimum's refinement) bracket in the same or neighbouring segments, and a node's
+/// s does not depend on the target. Valid for one curve and one [`FrameS`] only.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct NodeS<T> {
+    k: [usize; 4],
+    s: [T; 4],
+}
+
+impl<T: Real> NodeS<T> {
+    pub(crate) fn new() -> Self {
+        NodeS {
+            k: [usize::MAX; 4],
+            s: [T::ZERO; 4],
+        }
+    }
+}
+
+/// [`solve_s`] with a node cache `nodes` (same curve and frame in every call with one cache).
+/// The values are those of [`solve_s`]: a node's s is exactly what a fresh evaluation gives.
+pub(crate) fn solve_s_nodes<T: Real, F: Fn(T) -> (T, T)>(
+    pos: &F,
+    fr: &FrameS<T>,
+    len: usize,
+    t_hint: T,
+    s: T,
+    nodes: &Cell<NodeS<T>>,
+) -> Option<T> {
     if len < 2 {
         return None;
     }
@@ -661,17 +693,29 @@ pub(crate) fn solve_s<T: Real, F: Fn(T) -> (T, T)>(
         let (y, z) = pos(t);
         fr.s(y, z) - s
     };
+    let node = |k: usize| {
+        let mut c = nodes.get();
+        let slot = k & 3;
+        let sk = if c.k[slot] == k {
+            c.s[slot]
+        } else {
+            let (y, z) = pos(T::from_usize(k));
+            let v = fr.s(y, z);
+            c.k[slot] = k;
+            c.s[slot] = v;
+            nodes.set(c);
+            v
+        };
+        sk - s
+    };
     // s increases along the curve when σ = +1 (tangent roughly along +y), decreases when σ = −1
     let dir_up = fr.sigma > T::ZERO;
     let last = len - 1;
-    let mut k = (T::to_f64(math::clamp(
-        math::floor(t_hint),
-        T::ZERO,
-        T::from_usize(last - 1),
-    )) as usize)
-        .min(last - 1);
-    let mut fa = f(T::from_usize(k));
-    let mut fb = f(T::from_usize(k + 1));
+    // clamped to [0, last − 1] first: truncation is then the floor
+    let mut k =
+        (T::to_f64(math::clamp(t_hint, T::ZERO, T::from_usize(last - 1))) as usize).min(last - 1);
+    let mut fa = node(k);
+    let mut fb = node(k + 1);
     for _ in 0..len {
         let (inc_a, inc_b) = if dir_up { (fa, fb) } else { (-fa, -fb) };
         if inc_a <= T::ZERO && inc_b >= T::ZERO {
@@ -685,14 +729,14 @@ pub(crate) fn solve_s<T: Real, F: Fn(T) -> (T, T)>(
             }
             k += 1;
             fa = fb;
-            fb = f(T::from_usize(k + 1));
+            fb = node(k + 1);
         } else {
             if k == 0 {
                 return None;
             }
             k -= 1;
             fb = fa;
-            fa = f(T::from_usize(k));
+            fa = node(k);
         }
     }
     None
@@ -743,7 +787,11 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     let tr_ref = geom.rail_t_at(y_ref_s);
     let tw_ref = geom.wheel_t_at(y_ref_s);
     // rolling radius and wheel reference point: projection pair at s = 0
-    let tw0 = solve_s(&wpos, &fr, wheel.table.len, tw_ref, T::ZERO).ok_or(Error::NoContact)?;
+    // node caches of the root searches in this frame (one per curve)
+    let rnodes = Cell::new(NodeS::new());
+    let wnodes = Cell::new(NodeS::new());
+    let tw0 = solve_s_nodes(&wpos, &fr, wheel.table.len, tw_ref, T::ZERO, &wnodes)
+        .ok_or(Error::NoContact)?;
     let w0 = wheel.at(tw0);
     frame.rolling_radius = w0.radius;
     frame.y_ref_wheel = w0.profile.y;
@@ -763,8 +811,10 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
             let (mut rc2, mut wc2) = (SegmentCache::new(), SegmentCache::new());
             for i in 0..n {
                 let s = out.s(i);
-                tr = solve_s(&rpos, &fr, rail.table.len, tr, s).ok_or(Error::NoContact)?;
-                tw = solve_s(&wpos, &fr, wheel.table.len, tw, s).ok_or(Error::NoContact)?;
+                tr = solve_s_nodes(&rpos, &fr, rail.table.len, tr, s, &rnodes)
+                    .ok_or(Error::NoContact)?;
+                tw = solve_s_nodes(&wpos, &fr, wheel.table.len, tw, s, &wnodes)
+                    .ok_or(Error::NoContact)?;
                 let rp = rail.at_cached(tr, &mut rc2);
                 let wp = wheel.at_cached(tw, &mut wc2);
                 out.f_n[i] = fr.n(wp.y, wp.z) - fr.n(rp.y, rp.z);
@@ -801,8 +851,8 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     let sep_at = |s: T| -> Option<T> {
         match corr {
             Correspondence::Projection => {
-                let tr = solve_s(&rpos, &fr, rail.table.len, hint_r.get(), s)?;
-                let tw = solve_s(&wpos, &fr, wheel.table.len, hint_w.get(), s)?;
+                let tr = solve_s_nodes(&rpos, &fr, rail.table.len, hint_r.get(), s, &rnodes)?;
+                let tw = solve_s_nodes(&wpos, &fr, wheel.table.len, hint_w.get(), s, &wnodes)?;
                 hint_r.set(tr);
                 hint_w.set(tw);
                 let (rp, wp) = (rpos(tr), wpos(tw));

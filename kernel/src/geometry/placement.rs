@@ -202,8 +202,8 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
 
     /// Lateral position y_S at parameter `t` (root finding; cached).
     pub fn y_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
-        let e = self.table.hermite(t, cache);
-        e.y * self.cos_a + e.z * self.sin_a + self.ty
+        let (y, z) = self.table.hermite_pos(t, cache);
+        y * self.cos_a + z * self.sin_a + self.ty
     }
 
     /// [`Self::at`] with a segment cache.
@@ -223,8 +223,8 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
     /// Position (y_S, z_S) at parameter `t` (cached), without the angle of [`Self::at_cached`].
     #[inline]
     pub fn pos_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
-        let e = self.table.hermite(t, cache);
-        let (qy, qz) = (e.y, -e.z);
+        let (y, z) = self.table.hermite_pos(t, cache);
+        let (qy, qz) = (y, -z);
         (
             qy * self.cos_a - qz * self.sin_a + self.ty,
             qy * self.sin_a + qz * self.cos_a + self.tz,
@@ -801,7 +801,8 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         } else {
             T::ZERO
         };
-        let j = (T::to_f64(math::floor(x)) as usize).min(last);
+        // x ∈ [0, last] here: truncation is the floor
+        let j = (T::to_f64(x) as usize).min(last);
         (j, x - T::from_usize(j))
     }
 
