@@ -9,7 +9,7 @@
 //! * `ac`, `ft`, `ft-wear`, `patch` — on the heaviest patch of the first sweep case (dy = −3 mm,
 //!   1353 mm, right wheel): the Ayasse–Chollet region set-up (`adapt::region_patch`, all regions),
 //!   FaStrip with a `()` sink, FaStrip with a KTH wear sink, and `pipeline::solve_patch`
-//!   (STRIPES + AC + FaStrip + wear).
+//!   (STRIPES + AC + FaStrip + wear); `patch-forces`: `pipeline::solve_patch_forces` (no wear).
 //!
 //! Per call = (count at `reps` − count at 0 reps) / reps:
 //! `valgrind --tool=callgrind --callgrind-out-file=/dev/null target/release/examples/tangential_profile fastrip 100`.
@@ -23,7 +23,7 @@ use wrc_kernel::geometry::{contact_patches, Patches, WheelRail};
 use wrc_kernel::patch::{
     CellOut, CellSink, Creepage, HertzPressure, SemiEllipticStrips, TractionBound,
 };
-use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace};
+use wrc_kernel::pipeline::{solve_patch, solve_patch_forces, DefaultWorkspace};
 use wrc_kernel::stripes::StripSample;
 use wrc_kernel::wear::{StripWear, WearMap};
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
@@ -127,6 +127,22 @@ fn main() {
         .collect();
     let pc = &cfg.pipeline;
     let mut pw = Box::new(DefaultWorkspace::<f64>::new());
+    if work == "patch-forces" {
+        for _ in 0..reps {
+            let r = solve_patch_forces(
+                black_box(&samples[..]),
+                p.load,
+                &p.creepage,
+                &mat,
+                pc,
+                &mut pw,
+            )
+            .expect("patch");
+            acc += r.totals.fy;
+        }
+        println!("{work} × {reps}: Σ Fy = {acc:.6}");
+        return;
+    }
     if work == "patch" {
         for _ in 0..reps {
             let r = solve_patch(

@@ -6,7 +6,7 @@ use wrc_kernel::adapt::{AcFlexLength, Adaptation};
 use wrc_kernel::fastrip::{fastrip, FastripSettings};
 use wrc_kernel::hertz;
 use wrc_kernel::patch::{CellOut, CellSink, Creepage, GridExtent, SemiEllipticStrips, StripPatch};
-use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
+use wrc_kernel::pipeline::{solve_patch, solve_patch_forces, DefaultWorkspace, PipelineConfig};
 use wrc_kernel::stripes::StripSample;
 use wrc_kernel::Material;
 
@@ -141,5 +141,12 @@ fn pipeline_on_hertz_gap() {
             );
         }
         assert_eq!(&ws.wear.region_cells[1..], &hist[1..]);
+        // The forces-only variant: the same totals bit for bit, no wear.
+        let f = solve_patch_forces(&samples, load, &cr, &mat, &cfg, &mut ws).unwrap();
+        assert_eq!(f.totals, r.totals);
+        assert_eq!(f.regions[0].totals, r.regions[0].totals);
+        assert!(r.regions[0].wear_max > 0.0, "the case has wear");
+        assert_eq!(f.regions[0].wear_max, 0.0);
+        assert!(ws.wear.depth.iter().all(|d| *d == 0.0));
     }
 }

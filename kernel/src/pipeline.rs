@@ -173,8 +173,8 @@ impl<
     }
 }
 
-/// Forwards cells with the global strip index and accumulates wear.
-struct RegionSink<'a, T, K, const SS: usize> {
+/// Forwards cells with the global strip index and accumulates wear (if `WEAR`).
+struct RegionSink<'a, T, K, const SS: usize, const WEAR: bool> {
     inner: &'a mut K,
     wear: &'a mut StripWear<T, SS>,
     map: &'a WearMap<T>,
@@ -183,12 +183,14 @@ struct RegionSink<'a, T, K, const SS: usize> {
     dx: T,
 }
 
-impl<T: Real, K: CellSink<T>, const SS: usize> CellSink<T> for RegionSink<'_, T, K, SS> {
+impl<T: Real, K: CellSink<T>, const SS: usize, const WEAR: bool> CellSink<T>
+    for RegionSink<'_, T, K, SS, WEAR>
+{
     #[inline]
     fn cell(&mut self, j: usize, i: usize, out: &CellOut<T>) {
         let g = self.first + j;
-        if out.slip {
-            let s = math::hypot(out.sx, out.sy);
+        if WEAR && out.slip {
+            let s = math::hypot_fast(out.sx, out.sy);
             self.wear
                 .add_cell(self.map, g, out.pn, s, self.speed, self.dx);
         }
@@ -253,6 +255,55 @@ pub fn solve_patch<
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
     sink: &mut K,
 ) -> Result<PatchResult<T, NR>, Error> {
+    solve_patch_impl::<T, K, NS, NR, S, C, SS, true>(samples, load, cr, mat, cfg, ws, sink)
+}
+
+/// [`solve_patch`] for the forces only: no cells leave, and the wear is not computed (every
+/// region's `wear_max` is 0, the workspace's wear stays cleared). Everything else — STRIPES, the
+/// adaptation, the tangential solve, the totals — is the same computation, bit for bit. For
+/// iterations that use only the totals (e.g. the normal–tangential coupling rounds of a wheel
+/// solve), where the per-cell wear of every slipping cell would be wasted work.
+///
+/// Errors: as [`solve_patch`] except the wear-depth overflow.
+#[inline(never)]
+pub fn solve_patch_forces<
+    T: Real,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+) -> Result<PatchResult<T, NR>, Error> {
+    solve_patch_impl::<T, (), NS, NR, S, C, SS, false>(samples, load, cr, mat, cfg, ws, &mut ())
+}
+
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn solve_patch_impl<
+    T: Real,
+    K: CellSink<T>,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+    const WEAR: bool,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    sink: &mut K,
+) -> Result<PatchResult<T, NR>, Error> {
     check_positive(cfg.mu, "mu")?;
     check_positive(cfg.speed, "speed")?;
     cr.check()?;
@@ -270,17 +321,41 @@ pub fn solve_patch<
         alt.regions[ri + 1] = sol.regions[ri];
         alt.regions[ri + 1].y_lo = ys;
         let (m, a) = if w >= c::<T>(0.5) {
-            let m = layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, &mut ())?;
-            let a = layout_and_tangential(&alt, samples, load, cr, mat, cfg, ws, sink)?;
+            let m = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &sol,
+                samples,
+                load,
+                cr,
+                mat,
+                cfg,
+                ws,
+                &mut (),
+            )?;
+            let a = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &alt, samples, load, cr, mat, cfg, ws, sink,
+            )?;
             (m, a)
         } else {
-            let a = layout_and_tangential(&alt, samples, load, cr, mat, cfg, ws, &mut ())?;
-            let m = layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, sink)?;
+            let a = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &alt,
+                samples,
+                load,
+                cr,
+                mat,
+                cfg,
+                ws,
+                &mut (),
+            )?;
+            let m = layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+                &sol, samples, load, cr, mat, cfg, ws, sink,
+            )?;
             (m, a)
         };
         return Ok(blend(&m, &a, ri, w));
     }
-    layout_and_tangential(&sol, samples, load, cr, mat, cfg, ws, sink)
+    layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
+        &sol, samples, load, cr, mat, cfg, ws, sink,
+    )
 }
 
 /// Below this neck ratio r = h_neck / min(left peak, right peak) of the fine solution's strip
@@ -448,7 +523,7 @@ fn blend<T: Real, const NR: usize>(
     out
 }
 
-/// Strip layout of `sol`, adaptation and tangential solve per region, wear.
+/// Strip layout of `sol`, adaptation and tangential solve per region, wear (if `WEAR`).
 #[allow(clippy::too_many_arguments)]
 fn layout_and_tangential<
     T: Real,
@@ -458,6 +533,7 @@ fn layout_and_tangential<
     const S: usize,
     const C: usize,
     const SS: usize,
+    const WEAR: bool,
 >(
     sol: &StripesSolution<T, NR>,
     samples: &[StripSample<T>],
@@ -499,7 +575,7 @@ fn layout_and_tangential<
         }
         let patch =
             adapt::region_patch::<T, S, C, SS, NR>(&ws.set, r, &cfg.adapt, mat, &mut ws.local)?;
-        let mut rs = RegionSink {
+        let mut rs = RegionSink::<T, K, SS, WEAR> {
             inner: sink,
             wear: &mut ws.wear,
             map: &cfg.wear,
