@@ -845,7 +845,9 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     }
     let mut fmin = out.f_n[imin];
     // refine the minimum of the continuous separation on [s_{i−1}, s_{i+1}] (golden section,
-    // 40 steps), so the approach does not depend on the sample density
+    // 24 steps), so the approach does not depend on the sample density: the bracket shrinks to
+    // 0.618^24 ≈ 1e-5 of 2 ds, and the separation is quadratic there, so the minimum's value
+    // is off by ≤ ½ f''·(1e-5 ds)² — about 1e-11 mm at ds = 0.5 mm and |f''| = 1/mm
     let lo = out.s(imin.saturating_sub(1));
     let hi = out.s((imin + 1).min(n - 1));
     let sep_at = |s: T| -> Option<T> {
@@ -869,7 +871,7 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
         let mut c = b - g * (b - a);
         let mut d = a + g * (b - a);
         let (mut fc, mut fd) = (sep_at(c), sep_at(d));
-        for _ in 0..40 {
+        for _ in 0..24 {
             match (fc, fd) {
                 (Some(vc), Some(vd)) => {
                     if vc < vd {
