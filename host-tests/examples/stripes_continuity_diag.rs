@@ -1,5 +1,6 @@
-//! Diagnostics of the STRIPES continuity study (wheel_continuity open item), all `#[ignore]`d:
-//! `DYS=5.873,5.874 cargo test -p wrc-host-tests --release --test stripes_continuity_diag conv -- --ignored --nocapture`
+//! Diagnostics of the STRIPES continuity study (what `tests/wheel_continuity.rs` asserts), one
+//! subcommand each, parameters from environment variables:
+//! `DYS=5.873,5.874 cargo run -p wrc-host-tests --release --example stripes_continuity_diag -- conv`
 //! (per-wheel solve), `debug_jump` (STRIPES alone on the kernel's samples, `LOAD`, `OFF`, `SAMPLES`),
 //! `dump_samples` (`DY`), `load_scan` (`DY L0 L1 M`, optional `B2B LOADN`), `unfiltered_runs`
 //! (`DY LOADS`), `eps_curve`, `fine_regions` (`FROM TO STEP`, optional `B2B LOADN BFLOOR`: per-wheel
@@ -11,8 +12,6 @@ use wrc_kernel::geometry::Side;
 use wrc_kernel::stripes::{L0Mode, StripSet, Stripes, StripesConfig};
 use wrc_kernel::Material;
 
-#[test]
-#[ignore]
 fn debug_jump() {
     let (w, r) = tables().unwrap();
     let dys: Vec<f64> = std::env::var("DYS")
@@ -72,8 +71,6 @@ fn debug_jump() {
     }
 }
 
-#[test]
-#[ignore]
 fn dump_samples() {
     let (w, r) = tables().unwrap();
     let dy: f64 = std::env::var("DY").unwrap().parse().unwrap();
@@ -105,8 +102,6 @@ fn dump_samples() {
     }
 }
 
-#[test]
-#[ignore]
 fn eps_curve() {
     let a = 1.028e-3;
     let e_star = Material::<f64>::steel().e_star;
@@ -122,8 +117,6 @@ fn eps_curve() {
     }
 }
 
-#[test]
-#[ignore]
 fn conv() {
     let (w, r) = tables().unwrap();
     let dys: Vec<f64> = std::env::var("DYS")
@@ -164,8 +157,6 @@ fn conv() {
     }
 }
 
-#[test]
-#[ignore]
 fn load_scan() {
     let (w, r) = tables().unwrap();
     let dy: f64 = std::env::var("DY").unwrap().parse().unwrap();
@@ -211,8 +202,6 @@ fn load_scan() {
     }
 }
 
-#[test]
-#[ignore]
 fn unfiltered_runs() {
     let (w, r) = tables().unwrap();
     let dy: f64 = std::env::var("DY").unwrap().parse().unwrap();
@@ -257,8 +246,6 @@ fn unfiltered_runs() {
     }
 }
 
-#[test]
-#[ignore]
 fn forces_fine() {
     let (w, r) = tables().unwrap();
     let dys: Vec<f64> = std::env::var("DYS")
@@ -301,8 +288,6 @@ fn forces_fine() {
 
 /// Fine scan per region: `FROM TO STEP` (mm), per-wheel solve, prints per patch/region
 /// N, Fx, Fy, pmax, area, y-range.
-#[test]
-#[ignore]
 fn fine_regions() {
     let (w, r) = tables().unwrap();
     let from: f64 = std::env::var("FROM").unwrap().parse().unwrap();
@@ -373,8 +358,6 @@ fn fine_regions() {
 
 /// Scan for a sliver region (zero load after the re-solve): Manchester right y_ws = 0,
 /// δ_v from `DV0` to `DV1` in `M` steps, load `NL`, `EpsWeighted(0.5)`, `BFLOOR`.
-#[test]
-#[ignore]
 fn sliver_scan() {
     use wrc_kernel::geometry::{contact_patches, PatchOptions, Patches};
     use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
@@ -449,6 +432,39 @@ fn sliver_scan() {
                     }
                 }
             }
+        }
+    }
+}
+
+fn main() {
+    let which = std::env::args().nth(1).unwrap_or_default();
+    match which.as_str() {
+        "debug_jump" => debug_jump(),
+        "dump_samples" => dump_samples(),
+        "eps_curve" => eps_curve(),
+        "conv" => conv(),
+        "load_scan" => load_scan(),
+        "unfiltered_runs" => unfiltered_runs(),
+        "forces_fine" => forces_fine(),
+        "fine_regions" => fine_regions(),
+        "sliver_scan" => sliver_scan(),
+        _ => {
+            eprintln!(
+                "usage: stripes_continuity_diag <{}>",
+                [
+                    "debug_jump",
+                    "dump_samples",
+                    "eps_curve",
+                    "conv",
+                    "load_scan",
+                    "unfiltered_runs",
+                    "forces_fine",
+                    "fine_regions",
+                    "sliver_scan"
+                ]
+                .join("|")
+            );
+            std::process::exit(2);
         }
     }
 }
