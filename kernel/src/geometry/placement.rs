@@ -838,7 +838,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
     /// pose errors of `place` (`NonFinite`, `OutOfRange`) and those of the grid; on an error
     /// the grid is left empty (`n = 0`).
     pub fn reposition(&mut self, pose: &WheelsetPose<T>, side: Side) -> Result<(), Error> {
-        if !(self.step > T::ZERO) {
+        if self.step <= T::ZERO {
             return Err(Error::NoContact);
         }
         self.n = 0;
