@@ -195,6 +195,19 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         }
     }
 
+    /// An unplaced rail (no rotation or translation) for storage that is placed later.
+    const fn unplaced(table: &'a ProfileTable<T, N>) -> Self {
+        PlacedRail {
+            table,
+            cos_a: T::ONE,
+            sin_a: T::ZERO,
+            ty: T::ZERO,
+            tz: T::ZERO,
+            cant: T::ZERO,
+            t_top: T::ZERO,
+        }
+    }
+
     /// The rail point at curve parameter `t`.
     pub fn at(&self, t: T) -> RailPoint<T> {
         self.at_cached(t, &mut SegmentCache::new())
@@ -359,6 +372,16 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         if table.kind != ProfileKind::Wheel {
             return Err(Error::BadProfile("wheel table expected"));
         }
+        Ok(Self::posed(table, setup, pose, side))
+    }
+
+    /// The wheel of a validated table at a checked pose (no validation).
+    fn posed(
+        table: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+    ) -> Self {
         let s: T = side.sign();
         let phi = s * pose.roll;
         let psi = s * pose.yaw;
@@ -367,7 +390,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let a = cpsi;
         let b = sphi * spsi;
         let norm = math::hypot(a, b);
-        Ok(PlacedWheel {
+        PlacedWheel {
             table,
             u_off: setup.back_to_back * T::HALF - setup.flange_back_pos,
             r0: setup.r0,
@@ -381,7 +404,25 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             ct0: a / norm,
             cy: s * pose.dy,
             cz: T::ZERO,
-        })
+        }
+    }
+
+    /// An unplaced wheel (identity pose, right side) for storage that is placed later.
+    const fn unplaced(table: &'a ProfileTable<T, N>, setup: &TrackSetup<T>) -> Self {
+        PlacedWheel {
+            table,
+            u_off: T::ZERO,
+            r0: setup.r0,
+            cphi: T::ONE,
+            sphi: T::ZERO,
+            cpsi: T::ONE,
+            spsi: T::ZERO,
+            theta_norm: T::ONE,
+            st0: T::ZERO,
+            ct0: T::ONE,
+            cy: T::ZERO,
+            cz: T::ZERO,
+        }
     }
 
     /// The lowest wheel point for profile parameter `t`.
@@ -685,6 +726,8 @@ pub struct WheelRail<'a, T, const N: usize, const M: usize> {
     pub y_rigid: T,
     /// Raw minimum of Z_wheel − Z_rail with the wheelset centre at height 0 (= −cz), mm.
     pub raw_min: T,
+    /// Grid step requested at placement, mm ([`Self::reposition`] starts from it again).
+    step: T,
 }
 
 impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
@@ -702,23 +745,36 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         side: Side,
         grid_step: T,
     ) -> Result<Self, Error> {
-        setup.check()?;
-        pose.check()?;
-        crate::error::check_positive(grid_step, "grid_step")?;
-        if M < 8 {
-            return Err(Error::GridTooSmall("gap grid capacity M < 8"));
-        }
-        let prail = PlacedRail::place(rail, setup)?;
-        let pwheel = PlacedWheel::new(wheel, setup, pose, side)?;
-        let mut g = WheelRail {
-            side,
+        let mut g = Self::unplaced(rail, wheel, setup);
+        g.place_in(rail, wheel, setup, pose, side, grid_step)?;
+        Ok(g)
+    }
+
+    /// Storage for a placement that is filled later by [`Self::place_in`] (or
+    /// [`Self::reposition`] after a first `place_in`): a `const fn`, so it can initialise a
+    /// `static` or a long-lived workspace and the ≈ 5·M·size_of::<T>() bytes of the gap grid are
+    /// never returned by value. It holds no valid grid (`n = 0`: [`contact_patches`] answers
+    /// `NoContact`).
+    ///
+    /// [`contact_patches`]: super::contact_patches
+    pub const fn unplaced(
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+    ) -> Self {
+        WheelRail {
+            side: Side::Right,
             setup: *setup,
-            pose: *pose,
-            rail: prail,
-            wheel: pwheel,
+            pose: WheelsetPose {
+                dy: T::ZERO,
+                yaw: T::ZERO,
+                roll: T::ZERO,
+            },
+            rail: PlacedRail::unplaced(rail),
+            wheel: PlacedWheel::unplaced(wheel, setup),
             n: 0,
             y0: T::ZERO,
-            dy: grid_step,
+            dy: T::ZERO,
             gap: [T::ZERO; M],
             rail_t: [T::ZERO; M],
             wheel_t: [T::ZERO; M],
@@ -726,9 +782,78 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
             wheel_x: [T::ZERO; M],
             y_rigid: T::ZERO,
             raw_min: T::ZERO,
-        };
-        g.compute()?;
-        Ok(g)
+            step: T::ZERO,
+        }
+    }
+
+    /// [`Self::place`] into existing storage (no large return value; the stack holds only the
+    /// working variables). Same inputs, results and errors as `place`; on an error the grid is
+    /// left empty (`n = 0`).
+    pub fn place_in(
+        &mut self,
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+        grid_step: T,
+    ) -> Result<(), Error> {
+        self.prepare(rail, wheel, setup, grid_step)?;
+        self.reposition(pose, side)
+    }
+
+    /// The pose-independent part of a placement: validates the set-up, step and tables and
+    /// places the rail; leaves the grid empty (`n = 0`) for [`Self::reposition`].
+    fn prepare(
+        &mut self,
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        grid_step: T,
+    ) -> Result<(), Error> {
+        self.n = 0;
+        self.step = T::ZERO;
+        setup.check()?;
+        crate::error::check_positive(grid_step, "grid_step")?;
+        if M < 8 {
+            return Err(Error::GridTooSmall("gap grid capacity M < 8"));
+        }
+        let prail = PlacedRail::place(rail, setup)?;
+        // validates the wheel table (the pose is set by `reposition`)
+        let pwheel = PlacedWheel::new(wheel, setup, &self.pose, self.side)?;
+        self.setup = *setup;
+        self.rail = prail;
+        self.wheel = pwheel;
+        self.step = grid_step;
+        Ok(())
+    }
+
+    /// Moves the wheelset of a placed pair to a new pose (and side) and recomputes the touching
+    /// gap grid in place, with the tables, track set-up and grid step of the last successful
+    /// [`Self::place`] / [`Self::place_in`]: the per-time-step call. It skips what does not
+    /// depend on the pose — the validation of the tables (borrowed immutably, so unchanged) and
+    /// the placement of the rail — and gives the same result as `place` with the new pose.
+    ///
+    /// Errors: `NoContact` if the pair was never placed (storage from [`Self::unplaced`]), the
+    /// pose errors of `place` (`NonFinite`, `OutOfRange`) and those of the grid; on an error
+    /// the grid is left empty (`n = 0`).
+    pub fn reposition(&mut self, pose: &WheelsetPose<T>, side: Side) -> Result<(), Error> {
+        if self.step <= T::ZERO {
+            return Err(Error::NoContact);
+        }
+        self.n = 0;
+        pose.check()?;
+        self.wheel = PlacedWheel::posed(self.wheel.table, &self.setup, pose, side);
+        self.side = side;
+        self.pose = *pose;
+        self.dy = self.step;
+        self.y_rigid = T::ZERO;
+        self.raw_min = T::ZERO;
+        let r = self.compute();
+        if r.is_err() {
+            self.n = 0;
+        }
+        r
     }
 
     fn compute(&mut self) -> Result<(), Error> {
@@ -989,12 +1114,15 @@ pub fn equilibrium_roll<T: Real, const N: usize, const M: usize>(
     yaw: T,
     grid_step: T,
 ) -> Result<Equilibrium<T>, Error> {
-    let height = |roll: T, side: Side| -> Result<T, Error> {
-        let pose = WheelsetPose { dy, yaw, roll };
-        let g = WheelRail::<T, N, M>::place(rail, wheel, setup, &pose, side, grid_step)?;
+    // one placed pair, repositioned for every roll and side (the tables are validated and the
+    // rail placed once; the results are those of `WheelRail::place`)
+    let mut g = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
+    g.prepare(rail, wheel, setup, grid_step)?;
+    let mut height = |roll: T, side: Side| -> Result<T, Error> {
+        g.reposition(&WheelsetPose { dy, yaw, roll }, side)?;
         Ok(g.axle_height())
     };
-    let f = |roll: T| -> Result<T, Error> {
+    let mut f = |roll: T| -> Result<T, Error> {
         Ok(height(roll, Side::Left)? - height(roll, Side::Right)?)
     };
     let (mut a, mut b) = (math::c::<T>(-0.05), math::c::<T>(0.05));
