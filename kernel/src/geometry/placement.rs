@@ -461,9 +461,9 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
 
     /// Height z_S of the wheel point at axial position `u` (mm from the wheelset centre) with
     /// radius increase `ez` (mm) at the lowest-point angle (sin θ, cos θ):
-    /// z1 + cz = u sφ − (r0 + e_z) cθ cφ + cz, evaluated as u sφ − e_z cθ cφ + r0 (1 − cθ cφ)
-    /// + cz_off + (cz − cz_ref), so no ≈ r0 magnitudes cancel (f32: ≈ 1e-7 mm instead of
-    /// ≈ 3e-5 mm).
+    /// z1 + cz = u sφ − (r0 + e_z) cθ cφ + cz, evaluated as the sum of u sφ − e_z cθ cφ,
+    /// r0 (1 − cθ cφ), cz_off and (cz − cz_ref), so no ≈ r0 magnitudes cancel (f32: ≈ 1e-7 mm
+    /// instead of ≈ 3e-5 mm).
     #[inline]
     fn height(&self, u: T, ez: T, st: T, ct: T) -> T {
         // 1 − cos θ = sin²θ / (1 + cos θ) (θ is small: cos θ > 0)
