@@ -357,8 +357,19 @@ pub struct PlacedWheel<'a, T, const N: usize> {
     ct0: T,
     /// Lateral position of the wheelset centre in S, mm.
     pub cy: T,
-    /// Height of the wheelset centre (axle) in S, mm.
+    /// Height of the wheelset centre (axle) in S, mm. Set by the placement (touching); lower
+    /// the wheel with [`Self::lowered`], which keeps the heights resolved to the rounding of
+    /// the small local quantities (writing the field also moves the wheel, resolved to the
+    /// rounding of the ≈ r0 magnitude of `cz`: ≈ 3e-5 mm in f32).
     pub cz: T,
+    /// 1 − cos φ, computed without cancellation.
+    omc_phi: T,
+    /// Height offset of the wheel's positions: z_S = (z1 + r0) + `cz_off` + (`cz` − `cz_ref`)
+    /// with z1 + r0 evaluated from small quantities (no ≈ r0 magnitudes are added and
+    /// subtracted), mm.
+    cz_off: T,
+    /// The value of `cz` when `cz_off` was last set, mm.
+    cz_ref: T,
 }
 
 impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
@@ -404,6 +415,9 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             ct0: a / norm,
             cy: s * pose.dy,
             cz: T::ZERO,
+            omc_phi: sphi * sphi / (T::ONE + cphi),
+            cz_off: T::ZERO,
+            cz_ref: T::ZERO,
         }
     }
 
@@ -422,7 +436,44 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             ct0: T::ONE,
             cy: T::ZERO,
             cz: T::ZERO,
+            omc_phi: T::ZERO,
+            cz_off: T::ZERO,
+            cz_ref: T::ZERO,
         }
+    }
+
+    /// The wheel lowered rigidly by `dv` (mm, downwards) from this position.
+    pub fn lowered(&self, dv: T) -> Self {
+        let mut w = *self;
+        w.cz -= dv;
+        w.cz_off -= dv;
+        w.cz_ref = w.cz;
+        w
+    }
+
+    /// Sets the axle height `cz` (mm) from the offset `cz_off` of the local heights: the
+    /// touching placement.
+    fn set_height(&mut self, cz_off: T) {
+        self.cz_off = cz_off;
+        self.cz = self.r0 + cz_off;
+        self.cz_ref = self.cz;
+    }
+
+    /// Height z_S of the wheel point at axial position `u` (mm from the wheelset centre) with
+    /// radius increase `ez` (mm) at the lowest-point angle (sin θ, cos θ):
+    /// z1 + cz = u sφ − (r0 + e_z) cθ cφ + cz, evaluated as the sum of u sφ − e_z cθ cφ,
+    /// r0 (1 − cθ cφ), cz_off and (cz − cz_ref), so no ≈ r0 magnitudes cancel (f32: ≈ 1e-7 mm
+    /// instead of ≈ 3e-5 mm).
+    #[inline]
+    fn height(&self, u: T, ez: T, st: T, ct: T) -> T {
+        // 1 − cos θ = sin²θ / (1 + cos θ) (θ is small: cos θ > 0)
+        let omc_t = if ct > T::ZERO {
+            st * st / (T::ONE + ct)
+        } else {
+            T::ONE - ct
+        };
+        let omc = omc_t + ct * self.omc_phi;
+        u * self.sphi - ez * ct * self.cphi + self.r0 * omc + self.cz_off + (self.cz - self.cz_ref)
     }
 
     /// The lowest wheel point for profile parameter `t`.
@@ -465,8 +516,10 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
-        (x1 * self.spsi + y1 * self.cpsi + self.cy, z1 + self.cz)
+        (
+            x1 * self.spsi + y1 * self.cpsi + self.cy,
+            self.height(u, e.z, st, ct),
+        )
     }
 
     /// Lateral position y_S of the lowest point for parameter `t` (root finding; cached).
@@ -492,10 +545,14 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         let y = x1 * self.spsi + y1 * self.cpsi + self.cy;
         let d = dz * st * self.spsi + (dy * self.cphi + dz * ct * self.sphi) * self.cpsi;
-        (y, d, z1 + self.cz, x1 * self.cpsi - y1 * self.spsi)
+        (
+            y,
+            d,
+            self.height(u, e.z, st, ct),
+            x1 * self.cpsi - y1 * self.spsi,
+        )
     }
 
     /// Position (y_S, z_S) of the lowest point and its longitudinal position x for parameter
@@ -508,10 +565,9 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         (
             x1 * self.spsi + y1 * self.cpsi + self.cy,
-            z1 + self.cz,
+            self.height(u, e.z, st, ct),
             x1 * self.cpsi - y1 * self.spsi,
         )
     }
@@ -531,7 +587,6 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(cb, sb);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         // outward normal × cos β: (sθ cβ, −sβ, −cθ cβ)
         let (nx, ny, nz) = (st * cb, -sb, -ct * cb);
         let ny1 = ny * self.cphi - nz * self.sphi;
@@ -539,7 +594,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let ny2 = nx * self.spsi + ny1 * self.cpsi;
         WheelPoint {
             y: x1 * self.spsi + y1 * self.cpsi + self.cy,
-            z: z1 + self.cz,
+            z: self.height(u, p.z, st, ct),
             x: x1 * self.cpsi - y1 * self.spsi,
             angle: math::atan2(ny2, -nz1),
             curvature: -p.curvature,
@@ -1019,8 +1074,9 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         for j in 0..n {
             self.gap[j] = math::max(self.gap[j] - fmin, T::ZERO);
         }
-        self.raw_min = fmin;
-        self.wheel.cz = -fmin;
+        // the grid's wheel heights are z1 + r0 (local): raw minimum of z1 − z_rail is fmin − r0
+        self.raw_min = fmin - self.wheel.r0;
+        self.wheel.set_height(-fmin);
         self.y_rigid = lo + (T::from_usize(jmin) + p) * step;
         Ok(())
     }
