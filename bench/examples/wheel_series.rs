@@ -20,10 +20,12 @@
 //!   |ΔF|/(μ F_z) with F = (F_x, F_y) of the patch, |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area,
 //!   |Δδ_v|/δ_v.
 //! * instruction counts per call: `valgrind --tool=callgrind --callgrind-out-file=/tmp/cg/out
-//!   --dump-before='*cold_call*' --dump-after='*cold_call*' --dump-before='*warm_call*'
-//!   --dump-after='*warm_call*' target/release/examples/wheel_series ramp` then
+//!   --dump-before='*cold_call*' --dump-before='*warm_call*' --dump-before='*mark*'
+//!   target/release/examples/wheel_series ramp` then
 //!   `target/release/examples/wheel_series cg /tmp/cg/out` (median / max of the instructions
-//!   inside each `cold_call` and each `warm_call`, from the dump files).
+//!   inside each `cold_call` and each `warm_call`, from the dump files: every step runs
+//!   placement, `cold_call`, `warm_call`, `mark`, so the dump before `warm_call` holds the cold
+//!   solve and the dump before `mark` the warm one, each with a timer read).
 
 use std::time::Instant;
 use wrc_kernel::geometry::{equilibrium_roll, Side, TrackSetup, WheelRail, WheelsetPose};
@@ -137,6 +139,12 @@ fn warm_call(
     solve_wheel_warm(g, fz, mat, cfg, ws, st, &mut ()).expect("warm solve")
 }
 
+/// Marks the end of a step for callgrind's `--dump-before`.
+#[inline(never)]
+fn mark(x: f64) -> f64 {
+    std::hint::black_box(x)
+}
+
 fn median(v: &[f64]) -> f64 {
     let mut v = v.to_vec();
     v.sort_by(|a, b| a.total_cmp(b));
@@ -199,7 +207,12 @@ fn run(name: &str, steps: &[Step]) {
     let mut ws_c = Box::new(DefaultWheelWorkspace::<f64>::new());
     let mut ws_w = Box::new(DefaultWheelWorkspace::<f64>::new());
     let mut st = WheelState::<f64, 4>::new();
-    let mut counts = [[vec![], vec![]], [vec![], vec![]], [vec![], vec![]]];
+    let mut counts = [
+        [vec![], vec![]],
+        [vec![], vec![]],
+        [vec![], vec![]],
+        [vec![], vec![]],
+    ];
     let (mut t_c, mut t_w) = (vec![], vec![]);
     let mut diffs = vec![];
     let mut unconverged = [0, 0];
@@ -213,11 +226,12 @@ fn run(name: &str, steps: &[Step]) {
         t_c.push(t0.elapsed().as_secs_f64());
         let t0 = Instant::now();
         let wr = warm_call(&g, s.fz, &mat, &cfg, &mut ws_w, &mut st);
-        t_w.push(t0.elapsed().as_secs_f64());
+        t_w.push(mark(t0.elapsed().as_secs_f64()));
         for (i, res) in [&c, &wr].into_iter().enumerate() {
             counts[0][i].push(res.geometry_calls as f64);
             counts[1][i].push(res.stripes_solves as f64);
             counts[2][i].push(res.coupling_rounds as f64);
+            counts[3][i].push(res.iterations as f64);
             unconverged[i] += usize::from(!res.converged);
             for p in res.patches[..res.n].iter().flatten() {
                 check[i] += p.result.totals.fy.abs() + p.result.pmax;
@@ -233,9 +247,14 @@ fn run(name: &str, steps: &[Step]) {
         unconverged[0],
         unconverged[1]
     );
-    for (label, c) in ["geometry passes", "STRIPES solves", "coupling rounds"]
-        .iter()
-        .zip(&counts)
+    for (label, c) in [
+        "geometry passes",
+        "STRIPES solves",
+        "coupling rounds",
+        "load-loop passes",
+    ]
+    .iter()
+    .zip(&counts)
     {
         println!(
             "  {label:16} cold median {:4.1} max {:4.0} | warm median {:4.1} max {:4.0}",
@@ -273,7 +292,7 @@ fn run(name: &str, steps: &[Step]) {
 }
 
 /// Reads callgrind dump files `<base>.1`, `<base>.2`, … and prints median / max instructions of
-/// the dumps triggered by the end of `cold_call` and of `warm_call`.
+/// the cold solves (dumps before `warm_call`) and the warm ones (dumps before `mark`).
 fn parse_callgrind(base: &str) {
     let (mut cold, mut warm) = (vec![], vec![]);
     let mut part = 1;
@@ -293,12 +312,10 @@ fn parse_callgrind(base: &str) {
             .find_map(|l| l.strip_prefix("summary:").or(l.strip_prefix("totals:")))
             .and_then(|s| s.split_whitespace().next()?.parse().ok())
             .unwrap_or(0.0);
-        if trigger.contains("after") || trigger.contains("After") {
-            if trigger.contains("cold_call") {
-                cold.push(total);
-            } else if trigger.contains("warm_call") {
-                warm.push(total);
-            }
+        if trigger.ends_with("wheel_series::warm_call") {
+            cold.push(total);
+        } else if trigger.ends_with("wheel_series::mark") {
+            warm.push(total);
         }
     }
     for (label, v) in [("cold", &cold), ("warm", &warm)] {
@@ -322,7 +339,11 @@ fn main() {
     match what.as_str() {
         "cg" => parse_callgrind(&args.next().expect("callgrind output base name")),
         "ramp" => run("ramp", &ramp()),
-        "hunting" => run("hunting", &hunting()),
+        "hunting" => {
+            // optional step count (a shorter series for callgrind)
+            let n: usize = args.next().and_then(|s| s.parse().ok()).unwrap_or(1000);
+            run("hunting", &hunting()[..n.min(1000)])
+        }
         _ => {
             run("ramp", &ramp());
             run("hunting", &hunting());

@@ -25,12 +25,12 @@
 //! balance then moves the loads by |ΔN_k|/F_z ≤ (2 tol + |Δr_k| sin δ)/cos δ ≤ 4.2e-5 (δ ≤ 60°).
 //! With F_k = r_k N_k (and |F| ≤ μ N): |ΔF_k|/(μ F_z) ≤ (|Δr_k| N_k/F_z + μ |ΔN_k|/F_z)/μ ≤
 //! (2.2e-5 · 1.25 + 0.3 · 4.2e-5)/0.3 ≈ 1.4e-4 (N_k ≤ F_z/cos δ_k — the longitudinal force adds
-//! the same order through its own load dependence). Asserted: |ΔF_k|/(μ F_z) ≤ 1.5e-4 [9.2e-7],
-//! |ΔN_k|/F_z ≤ 5e-5 [1.4e-6], |Δδ_v|/δ_v ≤ 5e-5 [9.3e-7]. Peak pressure and area grow at most
+//! the same order through its own load dependence). Asserted: |ΔF_k|/(μ F_z) ≤ 1.5e-4 [1.4e-6],
+//! |ΔN_k|/F_z ≤ 5e-5 [1.6e-6], |Δδ_v|/δ_v ≤ 5e-5 [1.3e-6]. Peak pressure and area grow at most
 //! proportionally with the patch load (p ∝ N^{1/3}, A ∝ N^{2/3} for Hertz; below linear for the
 //! semi-Hertzian patches): |Δpmax|/pmax and |Δarea|/area ≤ 2 |ΔN_k|/N_k + 1e-6 (the factor 2
-//! and 1e-6 cover the strip layout of STRIPES following the load; measured maxima 5.0e-7 and
-//! 3.7e-6).
+//! and 1e-6 cover the strip layout of STRIPES following the load; measured maxima 6.8e-7 and
+//! 5.8e-6).
 
 use wrc_host_tests::profiles;
 use wrc_kernel::geometry::{equilibrium_roll, Side, TrackSetup, WheelRail, WheelsetPose};
@@ -207,9 +207,9 @@ fn series(name: &str, steps: &[(f64, f64, f64)], s: &Setup) {
         "{name}: {} steps, geometry passes cold {geo_c} warm {geo_w}, max |ΔF|/(μFz) {worst:.2e}",
         steps.len()
     );
-    // measured: ramp 2.7 k → 1.3 k passes, hunting 7.3 k → 4.1 k per 1000 steps
+    // measured: ramp 2337 → 1038 passes, hunting (300 steps) 2249 → 868
     assert!(
-        (geo_w as f64) < 0.8 * geo_c as f64,
+        (geo_w as f64) < 0.6 * geo_c as f64,
         "{name}: warm start saves no geometry passes ({geo_w} vs {geo_c})"
     );
 }

@@ -92,9 +92,17 @@
 //!   patches between calls). A matched patch inherits its slot's load, inverse-STRIPES state
 //!   (last load, approach and local exponent) and coupling ratio r_k; an unmatched patch starts
 //!   cold;
-//! * the coupling loop may stop after round 0 when the inherited ratios are already consistent
-//!   (every ratio changes by less than 1e-5 in that round, the same test later rounds use); a
-//!   cold call always needs round 1 to see a change.
+//! * before round 0 the ratios are predicted at the new pose: each patch's load at the warm
+//!   δ_v (inverse STRIPES, warm from its slot), all loads scaled by F_z / F(δ_v,warm) (the
+//!   balance to first order), and the tangential solve at those loads gives r_k. The pose
+//!   change (creepages, contact angle, radius) moves r_k by 3e-5…2e-4 per step on the ramp
+//!   below; the prediction leaves mostly < 1e-5 for round 0, so
+//! * the coupling loop may stop after round 0 when the ratios are already consistent (every
+//!   ratio changes by less than 1e-5 in that round, the same test later rounds use); a cold call
+//!   starts from r = 0 and always needs round 1 to see a change;
+//! * within a warm call a patch slot asked again for the approach of its last load, bit for bit
+//!   (the same patch at the same δ_v: the first pass of every split), returns that load without
+//!   a STRIPES solve (a cold call re-solves it, as it always did).
 //!
 //! Every loop keeps its bound and its tolerance, so a warm result satisfies the same
 //! conditions as a cold one and `converged` means the same. The two are different points within
@@ -104,16 +112,24 @@
 //! successful, converged call; a call that errs or does not converge leaves the state cold, so
 //! the next call starts cold.
 //!
-//! Measured (host, f64, S1002/UIC60 1360 mm right wheel, 83.3 kN, μ 0.3, 100 km/h;
-//! `cargo run --release -p wrc-bench --example wheel_series`; callgrind per call):
-//! | series | geometry passes cold → warm (median / max) | STRIPES solves of the split | coupling rounds | max warm − cold |ΔF|/(μF_z), |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area |
-//! |---|---|---|---|---|
-//! | ramp dy −3…6 mm, 0.01–0.05 mm steps, 83.3 kN (301 calls) | 8 / 15 → 4 / 8 | 20 / 66 → 10 / 28 | 3 / 3 → 2 / 3 | 9.2e-7, 1.4e-6, 5.0e-7, 3.7e-6 |
-//! | hunting dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (1000 calls) | 7 / 9 → 4 / 7 | 17 / 25 → 9 / 17 | 3 / 3 → 2 / 3 | 5.8e-7, 1.2e-6, 3.7e-7, 9.6e-7 |
+//! Measured (host, f64, S1002/UIC60 1360 mm right wheel, equilibrium roll, 83.3 kN, μ 0.3,
+//! 100 km/h, placement grid 0.05 mm; `cargo run --release -p wrc-bench --example wheel_series`,
+//! instructions by callgrind per call as that example's docs say; 2026-12-02). Counts are
+//! median / max per call, cold → warm:
 //!
-//! The warm − cold differences are those of two points that each meet the tolerances (1e-6 on
-//! the load balance and the approaches, 1e-5 on the coupling ratios); `tests/wheel_warm.rs`
-//! derives the bound |ΔF|/(μF_z) ≤ 1.5e-4 from them and asserts it.
+//! | series | instructions per call | geometry passes | STRIPES solves of the split | coupling rounds |
+//! |---|---|---|---|---|
+//! | ramp: dy −3…6 mm in 0.01–0.05 mm steps, yaw 1.2·dy mrad (301 calls) | 11.39 M / 33.0 M → 5.41 M / 16.6 M | 8 / 15 → 3 / 8 | 20 / 66 → 7 / 25 | 3 / 3 → 1 / 3 |
+//! | hunting: dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (first 250 calls) | 10.88 M / 14.7 M → 4.56 M / 12.4 M | 7 / 9 → 3 / 7 | 17 / 25 → 6 / 17 | 3 / 3 → 1 / 3 |
+//!
+//! Warm − cold differences (median / max over the steps, per patch): ramp |ΔF|/(μF_z) 1.2e-7 /
+//! 1.3e-6, |ΔN|/F_z 2.0e-7 / 1.3e-6, |Δpmax|/pmax 6.7e-8 / 6.8e-7, |Δarea|/area 1.5e-7 / 5.8e-6,
+//! |Δδ_v|/δ_v 1.4e-7 / 1.3e-6; hunting (1000 calls) 9.2e-8 / 8.8e-7, 2.3e-7 / 1.6e-6, 7.9e-8 /
+//! 5.8e-7, 1.7e-7 / 1.1e-6, 1.5e-7 / 1.1e-6. Every call converged, warm and cold, with the same
+//! patches. These are the differences of two points that each meet the tolerances (1e-6 on the
+//! load balance and the approaches, 1e-5 on the coupling ratios); `tests/wheel_warm.rs` derives
+//! the bound |ΔF|/(μF_z) ≤ 1.5e-4 from them and asserts it. The warm maxima are the steps
+//! where a region appears or splits (a new, cold patch slot).
 //!
 //! Bounds: at most [`MAX_OUTER`] geometry passes and [`MAX_INNER`] STRIPES solves per patch and
 //! pass; the result reports the passes used and whether both loops met their tolerances
@@ -259,6 +275,8 @@ pub struct WheelWorkspace<
     exponent: T,
     /// δ_v of the patches in `patches` (valid within one `solve_wheel` call only).
     patches_dv: Option<T>,
+    /// Warm call: a patch slot asked again for the approach of its last load reuses it.
+    reuse: bool,
 }
 
 /// The default wheel workspace: 4 patches of 128 samples, the default pipeline workspace.
@@ -288,6 +306,7 @@ impl<
             geometry_calls: 0,
             exponent: math::c(1.5),
             patches_dv: None,
+            reuse: false,
         }
     }
 }
@@ -353,6 +372,12 @@ struct InverseState<T> {
     n: T,
     delta: T,
     exponent: T,
+    /// Approach (mm) of the last load returned (0: none) …
+    a: T,
+    /// … that load (N) …
+    n_at_a: T,
+    /// … and whether its STRIPES solve converged.
+    ok: bool,
 }
 
 impl<T: Real> InverseState<T> {
@@ -361,6 +386,9 @@ impl<T: Real> InverseState<T> {
             n: T::ZERO,
             delta: T::ZERO,
             exponent: T::ZERO,
+            a: T::ZERO,
+            n_at_a: T::ZERO,
+            ok: false,
         }
     }
 }
@@ -494,7 +522,9 @@ impl<T: Real, const K: usize> Default for WheelState<T, K> {
 /// STRIPES load whose approach equals `a` (mm) on `samples` (relative tolerance `cfg.tol`, then
 /// one secant step to `a` itself); returns (load, converged, solves). `state` is the slot's last solve (warm start: the first guess
 /// follows the slot's last local exponent from its last point, and that point is the secant's
-/// first point); it is updated with every solve.
+/// first point); it is updated with every solve. With `reuse` (warm calls only: the cold path
+/// keeps its bits), a slot asked again for the approach of its last answer, bit for bit (the
+/// same patch at the same δ_v), returns that answer without a solve.
 fn load_for_approach<
     T: Real,
     const NS: usize,
@@ -510,7 +540,12 @@ fn load_for_approach<
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    reuse: bool,
 ) -> Result<(T, bool, u32), Error> {
+    if reuse && state.a == a && state.n_at_a > T::ZERO {
+        return Ok((state.n_at_a, state.ok, 0));
+    }
+    state.a = T::ZERO;
     let warm = state.n > T::ZERO && state.delta > T::ZERO && state.exponent > T::ZERO;
     let (mut n0, mut d0) = if warm {
         (state.n, state.delta)
@@ -540,6 +575,9 @@ fn load_for_approach<
             // far below the tolerance, so the load loop on δ_v does not see a staircase
             let (n, p) = loglog_step_inverse(d0, n0, d1, n1, a);
             state.exponent = p;
+            state.a = a;
+            state.n_at_a = n;
+            state.ok = sol.converged;
             return Ok((n, sol.converged, it + 1));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
@@ -648,6 +686,7 @@ fn split_load<
                 mat,
                 cfg,
                 &mut ws.pipeline,
+                ws.reuse,
             ) {
                 Ok((nk, ok, it)) => {
                     ws.solves += it;
@@ -831,6 +870,7 @@ fn solve<
     ws.geometry_calls = 0;
     ws.exponent = math::c(1.5);
     ws.patches_dv = None;
+    ws.reuse = false;
     let mut dv = math::c::<T>(0.05);
     // warm start: δ_v scaled by the load change, the patches there matched to the state's slots
     let mut warm = false;
@@ -844,6 +884,10 @@ fn solve<
             inherit(st, ws);
         }
         warm = true;
+        ws.reuse = true;
+        if !main_only {
+            predict_ratios(geom, target_value, mat, cfg, ws)?;
+        }
     }
     let mut passes = 0;
     let mut ok = false;
@@ -970,6 +1014,94 @@ fn solve<
         }
     }
     Ok(res)
+}
+
+/// Warm-start predictor of the coupling ratios: at the patches in `ws.patches` (the new pose at
+/// the warm δ_v), each patch's load for its approach (inverse STRIPES, warm from its slot) and
+/// the ratio r_k = F_y,k/N_k of the tangential solve at that load. The ratios then carry the
+/// pose change (creepages, contact angle, radius) into round 0 of the coupling, which can thereby
+/// meet its test; the loads found are reused by the first pass of the load loop.
+fn predict_ratios<
+    T: Real,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    fz: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+) -> Result<(), Error> {
+    let np = ws.patches.len.min(K);
+    let mut fsum = T::ZERO;
+    for k in 0..np {
+        let frame = ws.patches.items[k].frame;
+        let a = frame.approach;
+        let guess = if ws.loads[k] > T::ZERO {
+            ws.loads[k]
+        } else {
+            fz
+        };
+        ws.loads[k] = T::ZERO;
+        if !(a > T::ZERO) {
+            continue;
+        }
+        let n = samples_of(&ws.patches, k, &mut ws.samples);
+        let nk = match load_for_approach(
+            &ws.samples[..n],
+            a,
+            guess,
+            &mut ws.inverse[k],
+            mat,
+            cfg,
+            &mut ws.pipeline,
+            true,
+        ) {
+            Ok((nk, _, it)) => {
+                ws.solves += it;
+                nk
+            }
+            Err(Error::NoContact) | Err(Error::GridTooSmall(_)) => continue,
+            Err(e) => return Err(e),
+        };
+        if !(nk > T::ZERO) {
+            continue;
+        }
+        ws.loads[k] = nk;
+        fsum += nk * (math::cos(frame.angle) + ws.ratio[k] * ey_z(geom, frame.angle));
+    }
+    // the loads of the balance to first order: all scaled by F_z / F(δ_v,warm)
+    let scale = if fsum > T::ZERO && math::is_finite(fsum) {
+        math::clamp(fz / fsum, math::c(0.5), math::c(2.0))
+    } else {
+        T::ONE
+    };
+    for k in 0..np {
+        let nk = ws.loads[k] * scale;
+        if !(nk > T::ZERO) {
+            continue;
+        }
+        let frame = ws.patches.items[k].frame;
+        let cr = patch_creepage(geom, &frame, cfg)?;
+        let n = samples_of(&ws.patches, k, &mut ws.samples);
+        let r = solve_patch_forces(
+            &ws.samples[..n],
+            nk,
+            &cr,
+            mat,
+            &cfg.pipeline,
+            &mut ws.pipeline,
+        )?;
+        ws.ratio[k] = r.totals.fy / nk;
+    }
+    Ok(())
 }
 
 /// Gives each patch in `ws.patches` the load, inverse-STRIPES state and coupling ratio of the
