@@ -525,6 +525,7 @@ impl<T: Real, const K: usize> Default for WheelState<T, K> {
 /// first point); it is updated with every solve. With `reuse` (warm calls only: the cold path
 /// keeps its bits), a slot asked again for the approach of its last answer, bit for bit (the
 /// same patch at the same δ_v), returns that answer without a solve.
+#[allow(clippy::too_many_arguments)]
 fn load_for_approach<
     T: Real,
     const NS: usize,
