@@ -757,3 +757,36 @@ fn isosceles_rigid_pair_is_the_deepest() {
         assert!((pair.normal_angle - pa.items[k].frame.angle).abs() < 1e-3);
     }
 }
+
+/// Every row of the gap grid is an exact root pair: the rail and wheel points at the stored
+/// curve parameters lie at the row's lateral position (to 1e-10 mm; the Newton searches stop at
+/// a few rounding units of the ≈ 750 mm coordinate, 7e-13 mm), and the stored gap, tilt and
+/// longitudinal position are those of the two points (the wheel lowered to touching).
+#[test]
+fn gap_grid_rows_are_exact_root_pairs() {
+    let (w, r) = tables();
+    for (dy, yaw, roll, side) in [
+        (0.0, 0.0, 0.0, Side::Right),
+        (6.0, 7.2e-3, 2.0e-4, Side::Right),
+        (-3.0, -3.6e-3, -1.0e-4, Side::Left),
+        (6.6, 1.6e-2, 6.0e-3, Side::Left),
+    ] {
+        let g = place(&r, &w, WheelsetPose { dy, yaw, roll }, side);
+        let mut worst = 0.0f64;
+        for j in 0..g.n {
+            let y = g.y_at(j).clamp(g.y0, g.y_at(g.n - 1));
+            let rp = g.rail.at(g.rail_t[j]);
+            let wp = g.wheel.at(g.wheel_t[j]);
+            worst = worst.max((rp.y - y).abs()).max((wp.y - y).abs());
+            let gap = (wp.z - rp.z).max(0.0);
+            assert!(
+                (g.gap[j] - gap).abs() < 1e-9,
+                "row {j}: gap {} vs {gap}",
+                g.gap[j]
+            );
+            assert!((g.rail_angle[j] - rp.angle).abs() < 1e-12, "row {j} angle");
+            assert!((g.wheel_x[j] - wp.x).abs() < 1e-9, "row {j} x");
+        }
+        assert!(worst < 1e-10, "dy {dy}: lateral root error {worst:e} mm");
+    }
+}

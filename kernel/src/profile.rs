@@ -184,10 +184,16 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         }
         if !cache.valid || cache.i != i {
             let j = i + 1;
+            if cache.valid && cache.i + 1 == i {
+                // marching forward: the old end node is the new start node (same values)
+                cache.c0 = cache.c1;
+                cache.s0 = cache.s1;
+            } else {
+                cache.c0 = math::cos(self.angle[i]);
+                cache.s0 = math::sin(self.angle[i]);
+            }
             cache.i = i;
             cache.valid = true;
-            cache.c0 = math::cos(self.angle[i]);
-            cache.s0 = math::sin(self.angle[i]);
             cache.c1 = math::cos(self.angle[j]);
             cache.s1 = math::sin(self.angle[j]);
         }
@@ -224,24 +230,13 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         self.position(i, u, cache)
     }
 
-    /// Position and unit tangent (cos β, sin β) at `t` without the angle (no trigonometry when
-    /// the segment is cached).
-    pub fn hermite(&self, t: T, cache: &mut SegmentCache<T>) -> HermitePoint<T> {
-        if self.len < 2 {
-            return HermitePoint {
-                y: T::ZERO,
-                z: T::ZERO,
-                tc: T::ONE,
-                ts: T::ZERO,
-                curvature: T::ZERO,
-            };
-        }
-        let (i, u) = self.segment_cached(t, cache);
+    /// Derivative (dy/dt, dz/dt) of the cubic Hermite position on segment `i` at `u`.
+    #[inline]
+    fn derivative(&self, i: usize, u: T, cache: &SegmentCache<T>) -> (T, T) {
         let j = i + 1;
         let (c0, s0, c1, s1) = (cache.c0, cache.s0, cache.c1, cache.s1);
         let (y0, z0, y1, z1) = (self.y[i], self.z[i], self.y[j], self.z[j]);
         let h = self.ds;
-        let (y, z) = self.position(i, u, cache);
         let u2 = u * u;
         let two = T::TWO;
         let three = math::c::<T>(3.0);
@@ -252,6 +247,45 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
         let d11 = three * u2 - two * u;
         let dy = d00 * y0 + d10 * h * c0 + d01 * y1 + d11 * h * c1;
         let dz = d00 * z0 + d10 * h * s0 + d01 * z1 + d11 * h * s1;
+        (dy, dz)
+    }
+
+    /// Position (y, z) and its derivative (dy/dt, dz/dt) per unit of the node index at `t` (mm):
+    /// what a Newton root search on a curve needs.
+    pub(crate) fn hermite_pos_d(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T, T, T) {
+        if self.len < 2 {
+            return (T::ZERO, T::ZERO, T::ZERO, T::ZERO);
+        }
+        let (i, u) = self.segment_cached(t, cache);
+        let (y, z) = self.position(i, u, cache);
+        let (dy, dz) = self.derivative(i, u, cache);
+        (y, z, dy, dz)
+    }
+
+    /// Position and unit tangent (cos β, sin β) at `t` without the angle (no trigonometry when
+    /// the segment is cached).
+    pub fn hermite(&self, t: T, cache: &mut SegmentCache<T>) -> HermitePoint<T> {
+        self.hermite_d(t, cache).0
+    }
+
+    /// [`Self::hermite`] and the derivative (dy/dt, dz/dt) per unit of the node index, mm.
+    #[inline]
+    pub(crate) fn hermite_d(&self, t: T, cache: &mut SegmentCache<T>) -> (HermitePoint<T>, T, T) {
+        if self.len < 2 {
+            let p = HermitePoint {
+                y: T::ZERO,
+                z: T::ZERO,
+                tc: T::ONE,
+                ts: T::ZERO,
+                curvature: T::ZERO,
+            };
+            return (p, T::ZERO, T::ZERO);
+        }
+        let (i, u) = self.segment_cached(t, cache);
+        let j = i + 1;
+        let (c0, s0) = (cache.c0, cache.s0);
+        let (y, z) = self.position(i, u, cache);
+        let (dy, dz) = self.derivative(i, u, cache);
         // √(dy² + dz²) instead of `hypot` (a third of the cost): dy, dz are Hermite derivatives
         // of a validated table (finite nodes ds apart, unit node tangents), so |dy|, |dz| ≤ 3·ds
         // and neither overflows nor underflows to a wrong zero for any ds between 1e-15 and 1e15
@@ -263,13 +297,14 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
             (c0, s0)
         };
         let curvature = self.curvature[i] + u * (self.curvature[j] - self.curvature[i]);
-        HermitePoint {
+        let p = HermitePoint {
             y,
             z,
             tc,
             ts,
             curvature,
-        }
+        };
+        (p, dy, dz)
     }
 
     /// Node `i` as a [`CurvePoint`] (clamped to the table).

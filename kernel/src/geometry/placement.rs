@@ -439,6 +439,42 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         x1 * self.spsi + y1 * self.cpsi + self.cy
     }
 
+    /// Lateral position y_S of the lowest point for parameter `t`, an approximation of dy_S/dt
+    /// (exact without yaw; with yaw the turn of the lowest point's angle θ along the curve is left
+    /// out, a relative error of order ψ²·r·κ) for Newton root finding, and the point's z_S and
+    /// longitudinal position x (the values of [`Self::at_cached`]).
+    #[inline]
+    fn y_d_z_x_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T, T, T) {
+        let (e, dy, dz) = self.table.hermite_d(t, cache);
+        let u = e.y + self.u_off;
+        let r = self.r0 + e.z;
+        let (st, ct) = self.lowest(e.tc, e.ts);
+        let x1 = r * st;
+        let y1 = u * self.cphi + r * ct * self.sphi;
+        let z1 = u * self.sphi - r * ct * self.cphi;
+        let y = x1 * self.spsi + y1 * self.cpsi + self.cy;
+        let d = dz * st * self.spsi + (dy * self.cphi + dz * ct * self.sphi) * self.cpsi;
+        (y, d, z1 + self.cz, x1 * self.cpsi - y1 * self.spsi)
+    }
+
+    /// Position (y_S, z_S) of the lowest point and its longitudinal position x for parameter
+    /// `t` (cached): the values of [`Self::at_cached`] without the angles.
+    #[inline]
+    fn pos_x_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T, T) {
+        let e = self.table.hermite(t, cache);
+        let u = e.y + self.u_off;
+        let r = self.r0 + e.z;
+        let (st, ct) = self.lowest(e.tc, e.ts);
+        let x1 = r * st;
+        let y1 = u * self.cphi + r * ct * self.sphi;
+        let z1 = u * self.sphi - r * ct * self.cphi;
+        (
+            x1 * self.spsi + y1 * self.cpsi + self.cy,
+            z1 + self.cz,
+            x1 * self.cpsi - y1 * self.spsi,
+        )
+    }
+
     /// [`Self::at`] with a segment cache.
     pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> WheelPoint<T> {
         let e = self.table.hermite(t, cache);
@@ -537,38 +573,82 @@ fn monotone_window<T: Real, F: FnMut(usize) -> T>(
     (lo, hi)
 }
 
-fn solve_forward<T: Real, F: FnMut(T) -> T>(
+/// Moves the node bracket [k, k+1] of a curve forward (never back) until its node values
+/// `fk = (f(k), f(k+1))` enclose `target`, within nodes `0..len` of a non-decreasing stretch.
+/// Returns `false` if `target` lies outside the stretch.
+fn advance_bracket<T: Real, F: FnMut(usize) -> T>(
     f: &mut F,
     len: usize,
     k: &mut usize,
     fk: &mut (T, T),
     target: T,
-    tol: T,
-) -> Option<T> {
+) -> bool {
     if len < 2 {
-        return None;
+        return false;
     }
-    // fk = (f(k), f(k+1)) cached
     for _ in 0..len {
         if fk.1 >= target || *k + 2 >= len {
             break;
         }
         *k += 1;
         fk.0 = fk.1;
-        fk.1 = f(T::from_usize(*k + 1));
+        fk.1 = f(*k + 1);
     }
-    if target < fk.0 || target > fk.1 {
-        return None;
+    !(target < fk.0 || target > fk.1)
+}
+
+/// Root u ∈ [0, 1] of a function with f(0) = `f0` and f(1) = `f1` of opposite signs: Newton
+/// steps `f(u) → (value, derivative)` from the linear interpolation, each kept inside the
+/// current sign-change bracket (a bisection step otherwise), until |f| ≤ `tol` or the step
+/// stalls; at most 64 evaluations (the bisection alone reaches the resolution of f64 within
+/// them). Same-sign ends return the end with the smaller |f|; a zero end is returned as is.
+fn newton_bracketed<T: Real, F: FnMut(T) -> (T, T)>(mut f: F, f0: T, f1: T, tol: T) -> T {
+    if f0 == T::ZERO {
+        return T::ZERO;
     }
-    let tk = T::from_usize(*k);
-    let u = illinois(
-        |u| f(tk + u) - target,
-        fk.0 - target,
-        fk.1 - target,
-        40,
-        tol,
-    );
-    Some(tk + u)
+    if f1 == T::ZERO {
+        return T::ONE;
+    }
+    if (f0 > T::ZERO) == (f1 > T::ZERO) {
+        return if math::abs(f0) < math::abs(f1) {
+            T::ZERO
+        } else {
+            T::ONE
+        };
+    }
+    // `neg` is the bracket end where f has the sign of f0, `pos` the other one
+    let (mut neg, mut pos) = (T::ZERO, T::ONE);
+    let neg_sign = f0 > T::ZERO;
+    let mut u = f0 / (f0 - f1);
+    for _ in 0..64 {
+        let (v, d) = f(u);
+        if !math::is_finite(v) || math::abs(v) <= tol {
+            return u;
+        }
+        if (v > T::ZERO) == neg_sign {
+            neg = u;
+        } else {
+            pos = u;
+        }
+        let (lo, hi) = (math::min(neg, pos), math::max(neg, pos));
+        let newton = u - v / d;
+        let next = if d != T::ZERO && newton > lo && newton < hi {
+            newton
+        } else {
+            (lo + hi) * T::HALF
+        };
+        if next == u {
+            return u;
+        }
+        u = next;
+    }
+    u
+}
+
+/// z_S and tilt of a rail point (what the gap grid stores).
+struct RailAt<T> {
+    z: T,
+    angle: T,
 }
 
 /// One wheel on its rail at a given wheelset pose: placed profiles and the vertical gap on a
@@ -656,12 +736,10 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         let wl = self.wheel.table.len;
         let rail = self.rail;
         let wheel = self.wheel;
-        let mut cr = SegmentCache::new();
-        let mut cw = SegmentCache::new();
-        let mut cr2 = SegmentCache::new();
-        let mut cw2 = SegmentCache::new();
-        let mut fy_r = |t: T| rail.y_cached(t, &mut cr);
-        let mut fy_w = |t: T| wheel.y_cached(t, &mut cw);
+        // The wheel's node values need the node tangents (lowest point under yaw): a scan cache
+        // of its own that only marches forward, so the Newton steps' cache is not thrashed.
+        let mut cw_scan = SegmentCache::new();
+        let mut fy_w = |k: usize| wheel.y_cached(T::from_usize(k), &mut cw_scan);
         // lateral windows on which each placed curve is monotone in y_S: around the rail top and
         // around the wheel's tape circle (y_w = 0); side faces that overhang after cant, roll or
         // yaw are cut off there
@@ -675,7 +753,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
                 break;
             }
         }
-        let (wk0, wk1) = monotone_window(|k| fy_w(T::from_usize(k)), wl, k_tape);
+        let (wk0, wk1) = monotone_window(&mut fy_w, wl, k_tape);
         if rk1 <= rk0 || wk1 <= wk0 {
             return Err(Error::BadProfile(
                 "profile not monotone in y near the contact",
@@ -683,8 +761,8 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         }
         let r_lo = rail.node_y(rk0);
         let r_hi = rail.node_y(rk1);
-        let w_lo = fy_w(T::from_usize(wk0));
-        let w_hi = fy_w(T::from_usize(wk1));
+        let w_lo = fy_w(wk0);
+        let w_hi = fy_w(wk1);
         if !(math::is_finite(w_lo) && math::is_finite(w_hi)) {
             return Err(Error::NonFinite("wheel placement"));
         }
@@ -709,22 +787,87 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         self.n = n;
         self.dy = step;
         self.y0 = lo;
-        let tol = math::c::<T>(1e-11) + math::c::<T>(8.0) * T::EPSILON * math::abs(hi);
+        // Newton converges quadratically: stop at a few rounding units of the coordinate
+        let tol = math::c::<T>(4.0) * T::EPSILON * math::max(math::abs(lo), math::abs(hi));
         let (mut kr, mut kw) = (rk0, wk0);
-        let mut fr = (fy_r(T::from_usize(rk0)), fy_r(T::from_usize(rk0 + 1)));
-        let mut fw = (fy_w(T::from_usize(wk0)), fy_w(T::from_usize(wk0 + 1)));
+        // node values of the rail: exact node coordinates (what the Hermite curve gives there)
+        let mut fy_r = |k: usize| rail.node_y(k);
+        let mut fr = (fy_r(rk0), fy_r(rk0 + 1));
+        let mut cw_scan2 = SegmentCache::new();
+        let mut fy_w = |k: usize| wheel.y_cached(T::from_usize(k), &mut cw_scan2);
+        let mut fw = (fy_w(wk0), fy_w(wk0 + 1));
+        let mut cr = SegmentCache::new();
+        let mut cw = SegmentCache::new();
         let mut jmin = 0usize;
         let mut gmin = T::MAX;
         for j in 0..n {
             let y = lo + T::from_usize(j) * step;
             let y = math::clamp(y, lo, hi);
-            let tr = solve_forward(&mut fy_r, rk1 + 1, &mut kr, &mut fr, y, tol)
-                .ok_or(Error::BadProfile("rail not monotone in y"))?;
-            let tw = solve_forward(&mut fy_w, wk1 + 1, &mut kw, &mut fw, y, tol)
-                .ok_or(Error::BadProfile("wheel not monotone in y"))?;
-            let pr = rail.at_cached(tr, &mut cr2);
-            let pw = wheel.at_cached(tw, &mut cw2);
-            let gj = pw.z - pr.z;
+            // rail: Newton on the placed cubic; the last evaluation is kept for the point
+            if !advance_bracket(&mut fy_r, rk1 + 1, &mut kr, &mut fr, y) {
+                return Err(Error::BadProfile("rail not monotone in y"));
+            }
+            let tk = T::from_usize(kr);
+            let mut last_r = (T::MAX, T::ZERO, T::ZERO, T::ZERO, T::ZERO);
+            let u = newton_bracketed(
+                |u| {
+                    let t = tk + u;
+                    let (py, pz, dy, dz) = rail.table.hermite_pos_d(t, &mut cr);
+                    last_r = (t, py, pz, dy, dz);
+                    (
+                        py * rail.cos_a + pz * rail.sin_a + rail.ty - y,
+                        dy * rail.cos_a + dz * rail.sin_a,
+                    )
+                },
+                fr.0 - y,
+                fr.1 - y,
+                tol,
+            );
+            let tr = tk + u;
+            // the rail point (z_S, tilt) as `PlacedRail::at_cached` computes it
+            let (pr_z, pr_angle) = match last_r {
+                (t, py, pz, dy, dz) if t == tr && dy * dy + dz * dz > T::ZERO => {
+                    let norm = math::sqrt(dy * dy + dz * dz);
+                    let (qy, qz) = (py, -pz);
+                    (
+                        qy * rail.sin_a + qz * rail.cos_a + rail.tz,
+                        rail.cant - math::atan2(dz / norm, dy / norm),
+                    )
+                }
+                _ => {
+                    let p = rail.at_cached(tr, &mut cr);
+                    (p.z, p.angle)
+                }
+            };
+            // wheel: Newton on the lowest-point curve; the last evaluation gives z and x
+            if !advance_bracket(&mut fy_w, wk1 + 1, &mut kw, &mut fw, y) {
+                return Err(Error::BadProfile("wheel not monotone in y"));
+            }
+            let tk = T::from_usize(kw);
+            let mut last_w = (T::MAX, T::ZERO, T::ZERO);
+            let u = newton_bracketed(
+                |u| {
+                    let t = tk + u;
+                    let (py, d, pz, px) = wheel.y_d_z_x_cached(t, &mut cw);
+                    last_w = (t, pz, px);
+                    (py - y, d)
+                },
+                fw.0 - y,
+                fw.1 - y,
+                tol,
+            );
+            let tw = tk + u;
+            let (pw_z, pw_x) = if last_w.0 == tw {
+                (last_w.1, last_w.2)
+            } else {
+                let (_, z, x) = wheel.pos_x_cached(tw, &mut cw);
+                (z, x)
+            };
+            let pr = RailAt {
+                z: pr_z,
+                angle: pr_angle,
+            };
+            let gj = pw_z - pr.z;
             if !math::is_finite(gj) {
                 return Err(Error::NonFinite("gap"));
             }
@@ -732,7 +875,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
             self.rail_t[j] = tr;
             self.wheel_t[j] = tw;
             self.rail_angle[j] = pr.angle;
-            self.wheel_x[j] = pw.x;
+            self.wheel_x[j] = pw_x;
             if gj < gmin {
                 gmin = gj;
                 jmin = j;
