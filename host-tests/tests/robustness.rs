@@ -1487,7 +1487,6 @@ proptest! {
         dy in -8.0..8.0f64, spr in 0usize..40, blend in mostly(0.0..1.0f64),
         bmin in mostly(1e-7..1e-5f64), leps in mostly(0.1..5.0f64), frac in mostly(0.05..1.0f64),
         hm in 0u8..3, lm in 0u8..3, bk in 0u8..4, bval in garbage(), fastsim in any::<bool>(),
-        interaction in any::<bool>(),
     ) {
         let g = GeomIn { dy, yaw: 0.0, roll: 0.0, gauge: 1435.0, b2b: 1360.0, cant: 0.0,
                          left: false, step: 0.05, dv: 0.03, iso: false, rule: 0, samples: 96 };
@@ -1501,7 +1500,9 @@ proptest! {
             blend,
             b_min: bmin,
             b_floor: 0.0,
-            interaction,
+            // the inter-region coupling on half of the cases (from an existing input, so that the
+            // generated sequence stays the same)
+            interaction: spr % 2 == 1,
         };
         if fastsim {
             cfg.method = Method::Fastsim;
