@@ -790,3 +790,58 @@ fn gap_grid_rows_are_exact_root_pairs() {
         assert!(worst < 1e-10, "dy {dy}: lateral root error {worst:e} mm");
     }
 }
+
+/// `place_in` and `reposition` fill existing storage with exactly what `place` returns (same
+/// grid bit for bit), also after a side change; unplaced storage has no grid and cannot be
+/// repositioned; a failed placement leaves the grid empty.
+#[test]
+fn place_in_and_reposition_equal_place() {
+    let (w, r) = tables();
+    let setup = TrackSetup::standard();
+    let mut g = Box::new(WheelRail::<f64, 2048, 2048>::unplaced(&r, &w, &setup));
+    assert_eq!(g.n, 0);
+    let p0 = WheelsetPose {
+        dy: 0.0,
+        yaw: 0.0,
+        roll: 0.0,
+    };
+    assert_eq!(g.reposition(&p0, Side::Right), Err(Error::NoContact));
+    let same = |a: &WheelRail<'_, f64, 2048, 2048>, b: &WheelRail<'_, f64, 2048, 2048>| {
+        assert_eq!((a.n, a.y0, a.dy, a.side), (b.n, b.y0, b.dy, b.side));
+        assert_eq!(
+            (a.y_rigid, a.raw_min, a.wheel.cz),
+            (b.y_rigid, b.raw_min, b.wheel.cz)
+        );
+        for j in 0..a.n {
+            assert_eq!(
+                (a.gap[j], a.rail_t[j], a.wheel_t[j]),
+                (b.gap[j], b.rail_t[j], b.wheel_t[j])
+            );
+            assert_eq!(
+                (a.rail_angle[j], a.wheel_x[j]),
+                (b.rail_angle[j], b.wheel_x[j])
+            );
+        }
+    };
+    g.place_in(&r, &w, &setup, &p0, Side::Right, 0.05).unwrap();
+    same(&g, &place(&r, &w, p0, Side::Right));
+    for (dy, yaw, roll, side) in [
+        (6.0, 7.2e-3, 2.0e-4, Side::Right),
+        (-3.0, -3.6e-3, -1.0e-4, Side::Left),
+        (2.0, 2.4e-3, 0.0, Side::Right),
+    ] {
+        let pose = WheelsetPose { dy, yaw, roll };
+        g.reposition(&pose, side).unwrap();
+        same(&g, &place(&r, &w, pose, side));
+    }
+    let bad = WheelsetPose {
+        dy: 0.0,
+        yaw: 0.5,
+        roll: 0.0,
+    };
+    assert!(g.reposition(&bad, Side::Right).is_err());
+    assert_eq!(g.n, 0);
+    // a placement error leaves the grid empty as well
+    assert!(g.place_in(&r, &w, &setup, &p0, Side::Right, -1.0).is_err());
+    assert_eq!(g.n, 0);
+}

@@ -588,7 +588,8 @@ pub fn rejects<T: Real, M: Meter>(_m: &mut M, o: &mut Outs<T>) -> Result<(), Err
 }
 
 /// The default pipeline per wheel (issue 6): placement of the S1002 wheel on the UIC60 rail
-/// (right wheel, back-to-back 1360 mm, gap grid 0.05 mm) and `wheel::solve_wheel` at a vertical
+/// (right wheel, back-to-back 1360 mm, gap grid 0.05 mm; `WheelRail::place_in` into storage of
+/// this frame) and `wheel::solve_wheel` at a vertical
 /// load of 83.3 kN (μ 0.3, steel, V = 100 km/h, nominal rolling at R0 = 460 mm), metered as two
 /// calls ("wheel place", "wheel solve_wheel"). Results compared across precisions to 1e-3 of
 /// their own size (forces: 1e-3 of μF_z, the issue's f32-against-f64 criterion), the largest
@@ -611,8 +612,11 @@ fn wheel_case<T: WheelProfiles, M: Meter>(
         roll: T::ZERO,
     };
     let grid = T::from_f64(0.05);
-    let geom = m.call(label_place, || {
-        Placed::<T>::place(
+    // the placed pair lives in this frame (in an application: a static or a long-lived
+    // workspace); `place_in` fills it without returning the ≈ 5·M·size_of::<T>() bytes by value
+    let mut geom = Placed::<T>::unplaced(rail, wheel, &setup);
+    m.call(label_place, || {
+        black_box(&mut geom).place_in(
             black_box(rail),
             black_box(wheel),
             &setup,

@@ -272,8 +272,7 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
         return Err(Error::OutOfRange("isosceles search range"));
     }
     let fr = FrameS::new(geom, frame);
-    let mut wheel = geom.wheel;
-    wheel.cz -= frame.approach_vertical;
+    let wheel = geom.wheel.lowered(frame.approach_vertical);
     let rail = geom.rail;
     let ctx = Ctx {
         rail: &rail,

@@ -764,8 +764,7 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
         return Err(Error::OutOfRange("sample range"));
     }
     let fr = FrameS::new(geom, frame);
-    let mut wheel = geom.wheel;
-    wheel.cz -= frame.approach_vertical;
+    let wheel = geom.wheel.lowered(frame.approach_vertical);
     let rail = geom.rail;
     // Position-only evaluations with segment caches (root finding stays in one segment most of
     // the time: the node tangents' trigonometry is then computed once per segment).

@@ -195,6 +195,19 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         }
     }
 
+    /// An unplaced rail (no rotation or translation) for storage that is placed later.
+    const fn unplaced(table: &'a ProfileTable<T, N>) -> Self {
+        PlacedRail {
+            table,
+            cos_a: T::ONE,
+            sin_a: T::ZERO,
+            ty: T::ZERO,
+            tz: T::ZERO,
+            cant: T::ZERO,
+            t_top: T::ZERO,
+        }
+    }
+
     /// The rail point at curve parameter `t`.
     pub fn at(&self, t: T) -> RailPoint<T> {
         self.at_cached(t, &mut SegmentCache::new())
@@ -344,8 +357,19 @@ pub struct PlacedWheel<'a, T, const N: usize> {
     ct0: T,
     /// Lateral position of the wheelset centre in S, mm.
     pub cy: T,
-    /// Height of the wheelset centre (axle) in S, mm.
+    /// Height of the wheelset centre (axle) in S, mm. Set by the placement (touching); lower
+    /// the wheel with [`Self::lowered`], which keeps the heights resolved to the rounding of
+    /// the small local quantities (writing the field also moves the wheel, resolved to the
+    /// rounding of the ≈ r0 magnitude of `cz`: ≈ 3e-5 mm in f32).
     pub cz: T,
+    /// 1 − cos φ, computed without cancellation.
+    omc_phi: T,
+    /// Height offset of the wheel's positions: z_S = (z1 + r0) + `cz_off` + (`cz` − `cz_ref`)
+    /// with z1 + r0 evaluated from small quantities (no ≈ r0 magnitudes are added and
+    /// subtracted), mm.
+    cz_off: T,
+    /// The value of `cz` when `cz_off` was last set, mm.
+    cz_ref: T,
 }
 
 impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
@@ -359,6 +383,16 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         if table.kind != ProfileKind::Wheel {
             return Err(Error::BadProfile("wheel table expected"));
         }
+        Ok(Self::posed(table, setup, pose, side))
+    }
+
+    /// The wheel of a validated table at a checked pose (no validation).
+    fn posed(
+        table: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+    ) -> Self {
         let s: T = side.sign();
         let phi = s * pose.roll;
         let psi = s * pose.yaw;
@@ -367,7 +401,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let a = cpsi;
         let b = sphi * spsi;
         let norm = math::hypot(a, b);
-        Ok(PlacedWheel {
+        PlacedWheel {
             table,
             u_off: setup.back_to_back * T::HALF - setup.flange_back_pos,
             r0: setup.r0,
@@ -381,7 +415,65 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             ct0: a / norm,
             cy: s * pose.dy,
             cz: T::ZERO,
-        })
+            omc_phi: sphi * sphi / (T::ONE + cphi),
+            cz_off: T::ZERO,
+            cz_ref: T::ZERO,
+        }
+    }
+
+    /// An unplaced wheel (identity pose, right side) for storage that is placed later.
+    const fn unplaced(table: &'a ProfileTable<T, N>, setup: &TrackSetup<T>) -> Self {
+        PlacedWheel {
+            table,
+            u_off: T::ZERO,
+            r0: setup.r0,
+            cphi: T::ONE,
+            sphi: T::ZERO,
+            cpsi: T::ONE,
+            spsi: T::ZERO,
+            theta_norm: T::ONE,
+            st0: T::ZERO,
+            ct0: T::ONE,
+            cy: T::ZERO,
+            cz: T::ZERO,
+            omc_phi: T::ZERO,
+            cz_off: T::ZERO,
+            cz_ref: T::ZERO,
+        }
+    }
+
+    /// The wheel lowered rigidly by `dv` (mm, downwards) from this position.
+    pub fn lowered(&self, dv: T) -> Self {
+        let mut w = *self;
+        w.cz -= dv;
+        w.cz_off -= dv;
+        w.cz_ref = w.cz;
+        w
+    }
+
+    /// Sets the axle height `cz` (mm) from the offset `cz_off` of the local heights: the
+    /// touching placement.
+    fn set_height(&mut self, cz_off: T) {
+        self.cz_off = cz_off;
+        self.cz = self.r0 + cz_off;
+        self.cz_ref = self.cz;
+    }
+
+    /// Height z_S of the wheel point at axial position `u` (mm from the wheelset centre) with
+    /// radius increase `ez` (mm) at the lowest-point angle (sin θ, cos θ):
+    /// z1 + cz = u sφ − (r0 + e_z) cθ cφ + cz, evaluated as the sum of u sφ − e_z cθ cφ,
+    /// r0 (1 − cθ cφ), cz_off and (cz − cz_ref), so no ≈ r0 magnitudes cancel (f32: ≈ 1e-7 mm
+    /// instead of ≈ 3e-5 mm).
+    #[inline]
+    fn height(&self, u: T, ez: T, st: T, ct: T) -> T {
+        // 1 − cos θ = sin²θ / (1 + cos θ) (θ is small: cos θ > 0)
+        let omc_t = if ct > T::ZERO {
+            st * st / (T::ONE + ct)
+        } else {
+            T::ONE - ct
+        };
+        let omc = omc_t + ct * self.omc_phi;
+        u * self.sphi - ez * ct * self.cphi + self.r0 * omc + self.cz_off + (self.cz - self.cz_ref)
     }
 
     /// The lowest wheel point for profile parameter `t`.
@@ -424,8 +516,10 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
-        (x1 * self.spsi + y1 * self.cpsi + self.cy, z1 + self.cz)
+        (
+            x1 * self.spsi + y1 * self.cpsi + self.cy,
+            self.height(u, e.z, st, ct),
+        )
     }
 
     /// Lateral position y_S of the lowest point for parameter `t` (root finding; cached).
@@ -451,10 +545,14 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         let y = x1 * self.spsi + y1 * self.cpsi + self.cy;
         let d = dz * st * self.spsi + (dy * self.cphi + dz * ct * self.sphi) * self.cpsi;
-        (y, d, z1 + self.cz, x1 * self.cpsi - y1 * self.spsi)
+        (
+            y,
+            d,
+            self.height(u, e.z, st, ct),
+            x1 * self.cpsi - y1 * self.spsi,
+        )
     }
 
     /// Position (y_S, z_S) of the lowest point and its longitudinal position x for parameter
@@ -467,10 +565,9 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         (
             x1 * self.spsi + y1 * self.cpsi + self.cy,
-            z1 + self.cz,
+            self.height(u, e.z, st, ct),
             x1 * self.cpsi - y1 * self.spsi,
         )
     }
@@ -490,7 +587,6 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(cb, sb);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let z1 = u * self.sphi - r * ct * self.cphi;
         // outward normal × cos β: (sθ cβ, −sβ, −cθ cβ)
         let (nx, ny, nz) = (st * cb, -sb, -ct * cb);
         let ny1 = ny * self.cphi - nz * self.sphi;
@@ -498,7 +594,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let ny2 = nx * self.spsi + ny1 * self.cpsi;
         WheelPoint {
             y: x1 * self.spsi + y1 * self.cpsi + self.cy,
-            z: z1 + self.cz,
+            z: self.height(u, p.z, st, ct),
             x: x1 * self.cpsi - y1 * self.spsi,
             angle: math::atan2(ny2, -nz1),
             curvature: -p.curvature,
@@ -685,6 +781,8 @@ pub struct WheelRail<'a, T, const N: usize, const M: usize> {
     pub y_rigid: T,
     /// Raw minimum of Z_wheel − Z_rail with the wheelset centre at height 0 (= −cz), mm.
     pub raw_min: T,
+    /// Grid step requested at placement, mm ([`Self::reposition`] starts from it again).
+    step: T,
 }
 
 impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
@@ -702,23 +800,36 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         side: Side,
         grid_step: T,
     ) -> Result<Self, Error> {
-        setup.check()?;
-        pose.check()?;
-        crate::error::check_positive(grid_step, "grid_step")?;
-        if M < 8 {
-            return Err(Error::GridTooSmall("gap grid capacity M < 8"));
-        }
-        let prail = PlacedRail::place(rail, setup)?;
-        let pwheel = PlacedWheel::new(wheel, setup, pose, side)?;
-        let mut g = WheelRail {
-            side,
+        let mut g = Self::unplaced(rail, wheel, setup);
+        g.place_in(rail, wheel, setup, pose, side, grid_step)?;
+        Ok(g)
+    }
+
+    /// Storage for a placement that is filled later by [`Self::place_in`] (or
+    /// [`Self::reposition`] after a first `place_in`): a `const fn`, so it can initialise a
+    /// `static` or a long-lived workspace and the ≈ 5·M·size_of::<T>() bytes of the gap grid are
+    /// never returned by value. It holds no valid grid (`n = 0`: [`contact_patches`] answers
+    /// `NoContact`).
+    ///
+    /// [`contact_patches`]: super::contact_patches
+    pub const fn unplaced(
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+    ) -> Self {
+        WheelRail {
+            side: Side::Right,
             setup: *setup,
-            pose: *pose,
-            rail: prail,
-            wheel: pwheel,
+            pose: WheelsetPose {
+                dy: T::ZERO,
+                yaw: T::ZERO,
+                roll: T::ZERO,
+            },
+            rail: PlacedRail::unplaced(rail),
+            wheel: PlacedWheel::unplaced(wheel, setup),
             n: 0,
             y0: T::ZERO,
-            dy: grid_step,
+            dy: T::ZERO,
             gap: [T::ZERO; M],
             rail_t: [T::ZERO; M],
             wheel_t: [T::ZERO; M],
@@ -726,9 +837,78 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
             wheel_x: [T::ZERO; M],
             y_rigid: T::ZERO,
             raw_min: T::ZERO,
-        };
-        g.compute()?;
-        Ok(g)
+            step: T::ZERO,
+        }
+    }
+
+    /// [`Self::place`] into existing storage (no large return value; the stack holds only the
+    /// working variables). Same inputs, results and errors as `place`; on an error the grid is
+    /// left empty (`n = 0`).
+    pub fn place_in(
+        &mut self,
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        pose: &WheelsetPose<T>,
+        side: Side,
+        grid_step: T,
+    ) -> Result<(), Error> {
+        self.prepare(rail, wheel, setup, grid_step)?;
+        self.reposition(pose, side)
+    }
+
+    /// The pose-independent part of a placement: validates the set-up, step and tables and
+    /// places the rail; leaves the grid empty (`n = 0`) for [`Self::reposition`].
+    fn prepare(
+        &mut self,
+        rail: &'a ProfileTable<T, N>,
+        wheel: &'a ProfileTable<T, N>,
+        setup: &TrackSetup<T>,
+        grid_step: T,
+    ) -> Result<(), Error> {
+        self.n = 0;
+        self.step = T::ZERO;
+        setup.check()?;
+        crate::error::check_positive(grid_step, "grid_step")?;
+        if M < 8 {
+            return Err(Error::GridTooSmall("gap grid capacity M < 8"));
+        }
+        let prail = PlacedRail::place(rail, setup)?;
+        // validates the wheel table (the pose is set by `reposition`)
+        let pwheel = PlacedWheel::new(wheel, setup, &self.pose, self.side)?;
+        self.setup = *setup;
+        self.rail = prail;
+        self.wheel = pwheel;
+        self.step = grid_step;
+        Ok(())
+    }
+
+    /// Moves the wheelset of a placed pair to a new pose (and side) and recomputes the touching
+    /// gap grid in place, with the tables, track set-up and grid step of the last successful
+    /// [`Self::place`] / [`Self::place_in`]: the per-time-step call. It skips what does not
+    /// depend on the pose — the validation of the tables (borrowed immutably, so unchanged) and
+    /// the placement of the rail — and gives the same result as `place` with the new pose.
+    ///
+    /// Errors: `NoContact` if the pair was never placed (storage from [`Self::unplaced`]), the
+    /// pose errors of `place` (`NonFinite`, `OutOfRange`) and those of the grid; on an error
+    /// the grid is left empty (`n = 0`).
+    pub fn reposition(&mut self, pose: &WheelsetPose<T>, side: Side) -> Result<(), Error> {
+        if self.step <= T::ZERO {
+            return Err(Error::NoContact);
+        }
+        self.n = 0;
+        pose.check()?;
+        self.wheel = PlacedWheel::posed(self.wheel.table, &self.setup, pose, side);
+        self.side = side;
+        self.pose = *pose;
+        self.dy = self.step;
+        self.y_rigid = T::ZERO;
+        self.raw_min = T::ZERO;
+        let r = self.compute();
+        if r.is_err() {
+            self.n = 0;
+        }
+        r
     }
 
     fn compute(&mut self) -> Result<(), Error> {
@@ -894,8 +1074,9 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         for j in 0..n {
             self.gap[j] = math::max(self.gap[j] - fmin, T::ZERO);
         }
-        self.raw_min = fmin;
-        self.wheel.cz = -fmin;
+        // the grid's wheel heights are z1 + r0 (local): raw minimum of z1 − z_rail is fmin − r0
+        self.raw_min = fmin - self.wheel.r0;
+        self.wheel.set_height(-fmin);
         self.y_rigid = lo + (T::from_usize(jmin) + p) * step;
         Ok(())
     }
@@ -989,12 +1170,15 @@ pub fn equilibrium_roll<T: Real, const N: usize, const M: usize>(
     yaw: T,
     grid_step: T,
 ) -> Result<Equilibrium<T>, Error> {
-    let height = |roll: T, side: Side| -> Result<T, Error> {
-        let pose = WheelsetPose { dy, yaw, roll };
-        let g = WheelRail::<T, N, M>::place(rail, wheel, setup, &pose, side, grid_step)?;
+    // one placed pair, repositioned for every roll and side (the tables are validated and the
+    // rail placed once; the results are those of `WheelRail::place`)
+    let mut g = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
+    g.prepare(rail, wheel, setup, grid_step)?;
+    let mut height = |roll: T, side: Side| -> Result<T, Error> {
+        g.reposition(&WheelsetPose { dy, yaw, roll }, side)?;
         Ok(g.axle_height())
     };
-    let f = |roll: T| -> Result<T, Error> {
+    let mut f = |roll: T| -> Result<T, Error> {
         Ok(height(roll, Side::Left)? - height(roll, Side::Right)?)
     };
     let (mut a, mut b) = (math::c::<T>(-0.05), math::c::<T>(0.05));
