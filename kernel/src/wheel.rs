@@ -23,6 +23,8 @@
 //!   of the final split), STRIPES, adaptation, FaStrip, wear. The workspace carries nothing
 //!   from one call to the next that changes the result (load guesses are reset per call), so
 //!   calls are deterministic and independent of their order.
+//! * Across time steps (opt-in, [`solve_wheel_warm`]): a small caller-owned [`WheelState`] per
+//!   wheel carries the previous call's solution into the next one — see "Warm start" below.
 //!
 //! ## Example
 //! ```no_run
@@ -76,6 +78,43 @@
 //! change by less than 1e-5 (at most [`MAX_COUPLING`] rounds; a fixed point with contraction
 //! μ tan δ < 1 in full slip, exact in one round when the ratio is load-independent).
 //!
+//! ## Warm start across time steps ([`solve_wheel_warm`], [`WheelState`])
+//! A vehicle-dynamics code or HIL rig calls the solver every time step with a pose and load that
+//! change only slightly. [`solve_wheel`] starts every call cold (δ_v = 0.05 mm, load loop exponent
+//! 1.5, no load guesses, coupling ratios r_k = 0); [`solve_wheel_warm`] starts from a
+//! [`WheelState`] that the previous call of the same wheel left behind:
+//! * δ_v starts at the previous δ_v scaled by the load change along the previous local exponent
+//!   p of F(δ_v): δ_v = δ_v,prev (F_z / F_z,prev)^{1/p}; the first secant step of the load loop
+//!   uses p;
+//! * the patches found at that δ_v are matched to the previous call's patch slots by the lateral
+//!   position of their reference point (`y_ref_rail`, nearest first, each previous slot used
+//!   once, at most [`MATCH_MM`] apart; the geometry may reorder, split, merge, add or drop
+//!   patches between calls). A matched patch inherits its slot's load, inverse-STRIPES state
+//!   (last load, approach and local exponent) and coupling ratio r_k; an unmatched patch starts
+//!   cold;
+//! * the coupling loop may stop after round 0 when the inherited ratios are already consistent
+//!   (every ratio changes by less than 1e-5 in that round, the same test later rounds use); a
+//!   cold call always needs round 1 to see a change.
+//!
+//! Every loop keeps its bound and its tolerance, so a warm result satisfies the same
+//! conditions as a cold one and `converged` means the same. The two are different points within
+//! those tolerances, not the same bits. The result, and the state left behind, are a pure
+//! function of (inputs, state in): a call with a cold state ([`WheelState::new`], or after
+//! [`WheelState::reset`]) is bit-identical to [`solve_wheel`]. The state is written only by a
+//! successful, converged call; a call that errs or does not converge leaves the state cold, so
+//! the next call starts cold.
+//!
+//! Measured (host, f64, S1002/UIC60 1360 mm right wheel, 83.3 kN, μ 0.3, 100 km/h;
+//! `cargo run --release -p wrc-bench --example wheel_series`; callgrind per call):
+//! | series | geometry passes cold → warm (median / max) | STRIPES solves of the split | coupling rounds | max warm − cold |ΔF|/(μF_z), |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area |
+//! |---|---|---|---|---|
+//! | ramp dy −3…6 mm, 0.01–0.05 mm steps, 83.3 kN (301 calls) | 8 / 15 → 4 / 8 | 20 / 66 → 10 / 28 | 3 / 3 → 2 / 3 | 9.2e-7, 1.4e-6, 5.0e-7, 3.7e-6 |
+//! | hunting dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (1000 calls) | 7 / 9 → 4 / 7 | 17 / 25 → 9 / 17 | 3 / 3 → 2 / 3 | 5.8e-7, 1.2e-6, 3.7e-7, 9.6e-7 |
+//!
+//! The warm − cold differences are those of two points that each meet the tolerances (1e-6 on
+//! the load balance and the approaches, 1e-5 on the coupling ratios); `tests/wheel_warm.rs`
+//! derives the bound |ΔF|/(μF_z) ≤ 1.5e-4 from them and asserts it.
+//!
 //! Bounds: at most [`MAX_OUTER`] geometry passes and [`MAX_INNER`] STRIPES solves per patch and
 //! pass; the result reports the passes used and whether both loops met their tolerances
 //! (`converged`); a non-converged result is still the last consistent state (finite), flagged.
@@ -98,6 +137,13 @@ pub const MAX_OUTER: u32 = 30;
 pub const MAX_INNER: u32 = 16;
 /// Maximum rounds of the normal–tangential coupling through the vertical load.
 pub const MAX_COUPLING: u32 = 8;
+/// Largest lateral distance (mm, rail profile coordinates) between a patch's reference point and
+/// a patch slot of the previous call for [`solve_wheel_warm`] to treat them as the same patch.
+/// Between time steps a reference point moves by about the lateral-shift increment (hundredths
+/// of a mm at 1 kHz); distinct patches of one wheel lie further apart than their own widths (≥ 5
+/// mm on the tread). A wrong match only costs iterations: every loop still converges to its
+/// tolerance from the inherited guess.
+pub const MATCH_MM: f64 = 3.0;
 
 /// Options of [`solve_wheel`].
 #[derive(Clone, Copy, Debug)]
@@ -316,6 +362,132 @@ impl<T: Real> InverseState<T> {
             delta: T::ZERO,
             exponent: T::ZERO,
         }
+    }
+}
+
+/// One patch slot of a [`WheelState`].
+#[derive(Clone, Copy, Debug)]
+struct SlotState<T> {
+    /// Reference point of the patch, lateral, rail profile coordinates, mm.
+    y_ref: T,
+    /// Normal load N_k, N.
+    load: T,
+    /// Coupling ratio r_k = F_y,k / N_k.
+    ratio: T,
+    /// Last inverse STRIPES solve of the slot.
+    inverse: InverseState<T>,
+}
+
+impl<T: Real> SlotState<T> {
+    const fn cold() -> Self {
+        SlotState {
+            y_ref: T::ZERO,
+            load: T::ZERO,
+            ratio: T::ZERO,
+            inverse: InverseState::cold(),
+        }
+    }
+}
+
+/// The solution of one wheel carried from one call of [`solve_wheel_warm`] to the next (see the
+/// module docs, "Warm start"): δ_v, the load-loop exponent, the load target, and per patch slot
+/// (up to `K`) the reference point, load, inverse-STRIPES state and coupling ratio.
+///
+/// Small (a few dozen numbers) and plain data: keep one per wheel, next to the wheel's other
+/// simulation states, while the large [`WheelWorkspace`] may be shared by all wheels. A state
+/// belongs to one wheel (side, profiles, track set-up): starting another wheel from it is still
+/// correct (every loop converges to its tolerances) but no faster.
+#[derive(Clone, Copy, Debug)]
+pub struct WheelState<T, const K: usize> {
+    warm: bool,
+    /// Load target of the last call (F_z, or N of the main patch), N.
+    target: T,
+    /// δ_v of the last call, mm.
+    dv: T,
+    /// Local exponent d ln F / d ln δ_v of the last secant step of the load loop.
+    exponent: T,
+    /// Patch slots (`slots[..n]`).
+    slots: [SlotState<T>; K],
+    n: usize,
+}
+
+impl<T: Real, const K: usize> WheelState<T, K> {
+    /// A cold state: the next call of [`solve_wheel_warm`] is bit-identical to [`solve_wheel`].
+    pub const fn new() -> Self {
+        WheelState {
+            warm: false,
+            target: T::ZERO,
+            dv: T::ZERO,
+            exponent: T::ZERO,
+            slots: [SlotState::cold(); K],
+            n: 0,
+        }
+    }
+
+    /// Forgets the previous solution (the next call starts cold), e.g. after a jump of the pose
+    /// or a profile change.
+    pub fn reset(&mut self) {
+        *self = Self::new();
+    }
+
+    /// Whether the state carries a previous solution (a converged call since the last reset).
+    pub fn is_warm(&self) -> bool {
+        self.warm
+    }
+
+    /// δ_v of the previous call (mm), if warm.
+    pub fn vertical_approach(&self) -> Option<T> {
+        if self.warm {
+            Some(self.dv)
+        } else {
+            None
+        }
+    }
+
+    /// Number of patch slots carried.
+    pub fn patches(&self) -> usize {
+        self.n
+    }
+
+    /// Patch slot `k` as (reference point `y_ref_rail` in mm, normal load N_k in N, coupling
+    /// ratio F_y,k/N_k), if carried.
+    pub fn patch(&self, k: usize) -> Option<(T, T, T)> {
+        if self.warm && k < self.n.min(K) {
+            let s = &self.slots[k];
+            Some((s.y_ref, s.load, s.ratio))
+        } else {
+            None
+        }
+    }
+
+    /// δ_v to start from for the target `target`, and the load-loop exponent; `None` if cold or
+    /// not usable.
+    fn start(&self, target: T) -> Option<(T, T)> {
+        if !self.warm {
+            return None;
+        }
+        let p = self.exponent;
+        if !(p > T::ZERO) || !(self.dv > T::ZERO) || !(self.target > T::ZERO) {
+            return None;
+        }
+        let p = math::clamp(p, math::c(0.5), math::c(4.0));
+        let step = math::clamp(
+            math::ln(target / self.target) / p,
+            math::c(-3.0),
+            math::c(3.0),
+        );
+        let dv = self.dv * math::exp(step);
+        if dv > T::ZERO && math::is_finite(dv) {
+            Some((dv, p))
+        } else {
+            None
+        }
+    }
+}
+
+impl<T: Real, const K: usize> Default for WheelState<T, K> {
+    fn default() -> Self {
+        Self::new()
     }
 }
 
@@ -551,7 +723,45 @@ pub fn solve_wheel<
     sink: &mut W,
 ) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(fz, "fz")?;
-    solve(geom, Target::Vertical(fz), mat, cfg, ws, sink)
+    solve(geom, Target::Vertical(fz), mat, cfg, ws, None, sink)
+}
+
+/// [`solve_wheel`] warm-started from `state`, the solution the previous call of this wheel left
+/// behind (module docs, "Warm start"); on return `state` holds this call's solution (or is cold
+/// if the call failed or did not converge). With a cold `state` the result is bit-identical to
+/// [`solve_wheel`]; with a warm one it agrees with it within the loop tolerances.
+///
+/// Errors: as [`solve_wheel`].
+#[allow(clippy::too_many_arguments)]
+pub fn solve_wheel_warm<
+    T: Real,
+    W: WheelSink<T>,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    fz: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    state: &mut WheelState<T, K>,
+    sink: &mut W,
+) -> Result<WheelResult<T, K, NR>, Error> {
+    let out = match check_positive(fz, "fz") {
+        Ok(_) => solve(geom, Target::Vertical(fz), mat, cfg, ws, Some(state), sink),
+        Err(e) => Err(e),
+    };
+    if !matches!(out, Ok(ref r) if r.converged) {
+        state.reset();
+    }
+    out
 }
 
 /// The second load mode of the per-wheel solver: the **normal** load `n` (N) of the main
@@ -584,7 +794,7 @@ pub fn solve_wheel_normal<
     sink: &mut W,
 ) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(n, "N")?;
-    solve(geom, Target::MainNormal(n), mat, cfg, ws, sink)
+    solve(geom, Target::MainNormal(n), mat, cfg, ws, None, sink)
 }
 
 #[allow(clippy::too_many_arguments)]
@@ -606,10 +816,14 @@ fn solve<
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    state: Option<&mut WheelState<T, K>>,
     sink: &mut W,
 ) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(cfg.tol, "tol")?;
     let main_only = matches!(target, Target::MainNormal(_));
+    let target_value = match target {
+        Target::Vertical(f) | Target::MainNormal(f) => f,
+    };
     ws.ratio = [T::ZERO; K];
     ws.loads = [T::ZERO; K];
     ws.inverse = [InverseState::cold(); K];
@@ -618,6 +832,19 @@ fn solve<
     ws.exponent = math::c(1.5);
     ws.patches_dv = None;
     let mut dv = math::c::<T>(0.05);
+    // warm start: δ_v scaled by the load change, the patches there matched to the state's slots
+    let mut warm = false;
+    if let Some((dv_w, p)) = state.as_deref().and_then(|st| st.start(target_value)) {
+        dv = dv_w;
+        ws.exponent = p;
+        contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
+        ws.patches_dv = Some(dv);
+        ws.geometry_calls += 1;
+        if let Some(st) = state.as_deref() {
+            inherit(st, ws);
+        }
+        warm = true;
+    }
     let mut passes = 0;
     let mut ok = false;
     let mut vload = T::ZERO;
@@ -658,7 +885,8 @@ fn solve<
             change = math::max(change, math::abs(ratio - ws.ratio[k]));
             ws.ratio[k] = ratio;
         }
-        if round > 0 && change < math::c(1e-5) {
+        // a cold round 0 starts from r = 0 and cannot see a change; a warm one can
+        if (round > 0 || warm) && change < math::c(1e-5) {
             coupled = true;
             break;
         }
@@ -722,7 +950,84 @@ fn solve<
             .map(|p| p.load * math::cos(p.frame.angle))
             .fold(T::ZERO, |a, b| a + b);
     }
+    if let Some(st) = state {
+        st.warm = true;
+        st.target = target_value;
+        st.dv = dv;
+        st.exponent = ws.exponent;
+        st.n = np;
+        for (k, slot) in st.slots.iter_mut().enumerate() {
+            *slot = if k < np {
+                SlotState {
+                    y_ref: ws.patches.items[k].frame.y_ref_rail,
+                    load: ws.loads[k],
+                    ratio: ws.ratio[k],
+                    inverse: ws.inverse[k],
+                }
+            } else {
+                SlotState::cold()
+            };
+        }
+    }
     Ok(res)
+}
+
+/// Gives each patch in `ws.patches` the load, inverse-STRIPES state and coupling ratio of the
+/// nearest slot of `st` (reference points at most [`MATCH_MM`] apart, nearest pairs first, each
+/// slot used once); unmatched patches stay cold.
+fn inherit<
+    T: Real,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    st: &WheelState<T, K>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+) {
+    let np = ws.patches.len.min(K);
+    let ns = st.n.min(K);
+    let mut new_used = [false; K];
+    let mut old_used = [false; K];
+    let limit = math::c::<T>(MATCH_MM);
+    // at most min(np, ns) ≤ K pairs; each round takes the globally nearest free pair
+    for _ in 0..K {
+        let mut best: Option<(usize, usize, T)> = None;
+        for (k, (item, &used_k)) in ws.patches.items[..np].iter().zip(&new_used).enumerate() {
+            if used_k {
+                continue;
+            }
+            let y = item.frame.y_ref_rail;
+            for (j, (slot, &used_j)) in st.slots[..ns].iter().zip(&old_used).enumerate() {
+                if used_j {
+                    continue;
+                }
+                let d = math::abs(y - slot.y_ref);
+                if !(d <= limit) {
+                    continue;
+                }
+                match best {
+                    Some((_, _, b)) if b <= d => {}
+                    _ => best = Some((k, j, d)),
+                }
+            }
+        }
+        let Some((k, j, _)) = best else {
+            break;
+        };
+        new_used[k] = true;
+        old_used[j] = true;
+        let s = &st.slots[j];
+        let finite = math::is_finite(s.load) && math::is_finite(s.ratio);
+        if finite && s.load > T::ZERO {
+            ws.loads[k] = s.load;
+            ws.ratio[k] = s.ratio;
+            ws.inverse[k] = s.inverse;
+        }
+    }
 }
 
 /// Creepages of a patch: prescribed, or from the kinematics at its reference point.

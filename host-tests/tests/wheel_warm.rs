@@ -1,0 +1,254 @@
+//! Warm start of the per-wheel solve across time steps (`wheel::solve_wheel_warm`,
+//! `wheel::WheelState`; kernel `wheel` module docs, "Warm start"), S1002/UIC60, right wheel,
+//! back-to-back 1360 mm, μ 0.3, V = 100 km/h, f64, along two time series:
+//! * a lateral-shift ramp dy = −3 … 6 mm in steps cycling 0.01 … 0.05 mm (yaw 1.2·dy mrad,
+//!   83.3 kN): it crosses every change of the contact's character of this wheel (regions appear,
+//!   split and merge at dy ≈ 3.98, 4.5, 4.75, 5.88 mm, `tests/wheel_continuity.rs`), so patch
+//!   slots appear, disappear and move between steps;
+//! * a hunting-like sinusoid dy = 4 sin(2π t / 1 s) at 1 kHz over 0.3 s with F_z = 83.3 kN ±10 %.
+//!
+//! What is asserted:
+//! * a call with a cold state is bit-identical to `solve_wheel` (the cold path is unchanged);
+//! * the warm result is a pure function of (inputs, state in): the same state copy gives the same
+//!   bits from a workspace with another history;
+//! * warm and cold results agree within a bound derived from the loop tolerances (below);
+//! * the warm start saves work: fewer geometry passes over the series (a count, not a time);
+//! * a failed call leaves the state cold.
+//!
+//! # Bound (derived from the tolerances; measured maxima in brackets, 2026-12-02)
+//! Both results satisfy the same conditions, each to its own tolerance, from different starting
+//! points: the vertical balance |Σ N_k (cos δ_k + r_k e_y,z) − F_z| ≤ tol·F_z (tol = 1e-6), each
+//! patch's STRIPES approach within tol of its geometric one (closed by a secant step), and the
+//! coupling ratios r_k = F_y,k/N_k changing by < ε = 1e-5 in the last round. The fixed point of the
+//! coupling contracts with q ≤ μ tan δ ≤ 0.3·tan 60° = 0.52 (full slip at the flange), so each
+//! result's ratios lie within ε·q/(1 − q) ≤ 1.1e-5 of the fixed point: |Δr_k| ≤ 2.2e-5. The
+//! balance then moves the loads by |ΔN_k|/F_z ≤ (2 tol + |Δr_k| sin δ)/cos δ ≤ 4.2e-5 (δ ≤ 60°).
+//! With F_k = r_k N_k (and |F| ≤ μ N): |ΔF_k|/(μ F_z) ≤ (|Δr_k| N_k/F_z + μ |ΔN_k|/F_z)/μ ≤
+//! (2.2e-5 · 1.25 + 0.3 · 4.2e-5)/0.3 ≈ 1.4e-4 (N_k ≤ F_z/cos δ_k — the longitudinal force adds
+//! the same order through its own load dependence). Asserted: |ΔF_k|/(μ F_z) ≤ 1.5e-4 [9.2e-7],
+//! |ΔN_k|/F_z ≤ 5e-5 [1.4e-6], |Δδ_v|/δ_v ≤ 5e-5 [9.3e-7]. Peak pressure and area grow at most
+//! proportionally with the patch load (p ∝ N^{1/3}, A ∝ N^{2/3} for Hertz; below linear for the
+//! semi-Hertzian patches): |Δpmax|/pmax and |Δarea|/area ≤ 2 |ΔN_k|/N_k + 1e-6 (the factor 2
+//! and 1e-6 cover the strip layout of STRIPES following the load; measured maxima 5.0e-7 and
+//! 3.7e-6).
+
+use wrc_host_tests::profiles;
+use wrc_kernel::geometry::{equilibrium_roll, Side, TrackSetup, WheelRail, WheelsetPose};
+use wrc_kernel::profile::ProfileTable;
+use wrc_kernel::wheel::{
+    solve_wheel, solve_wheel_warm, DefaultWheelWorkspace, WheelConfig, WheelResult, WheelState,
+};
+use wrc_kernel::Material;
+
+const FZ: f64 = 83_300.0;
+const MU: f64 = 0.3;
+
+struct Setup {
+    wheel: Box<ProfileTable<f64, 2048>>,
+    rail: Box<ProfileTable<f64, 2048>>,
+    track: TrackSetup<f64>,
+    /// equilibrium roll on a 0.5 mm grid of y_ws from −4.5 mm
+    roll: Vec<f64>,
+    mat: Material<f64>,
+    cfg: WheelConfig<f64>,
+}
+
+impl Setup {
+    fn new() -> Self {
+        let (wheel, rail) =
+            profiles::manchester_tables::<f64>(&profiles::SmoothOptions::default()).unwrap();
+        let track = TrackSetup {
+            back_to_back: 1360.0,
+            ..TrackSetup::<f64>::standard()
+        };
+        let roll = (0..=22)
+            .map(|i| {
+                let y = -4.5 + 0.5 * i as f64;
+                let p = WheelsetPose::from_contact(y, 1.2e-3 * y, 0.0);
+                equilibrium_roll::<f64, 2048, 2048>(&rail, &wheel, &track, p.dy, p.yaw, 0.2)
+                    .unwrap()
+                    .roll
+            })
+            .collect();
+        Setup {
+            wheel,
+            rail,
+            track,
+            roll,
+            mat: Material::steel(),
+            cfg: WheelConfig::recommended(MU, 100.0 / 3.6 * 1000.0, 460.0),
+        }
+    }
+
+    fn place(&self, y: f64, yaw: f64) -> WheelRail<'_, f64, 2048, 2048> {
+        let u = ((y + 4.5) / 0.5).clamp(0.0, 21.999);
+        let i = u.floor() as usize;
+        let f = u - i as f64;
+        let roll = self.roll[i] * (1.0 - f) + self.roll[i + 1] * f;
+        let pose = WheelsetPose::from_contact(y, yaw, roll);
+        WheelRail::place(
+            &self.rail,
+            &self.wheel,
+            &self.track,
+            &pose,
+            Side::Right,
+            0.05,
+        )
+        .unwrap()
+    }
+}
+
+/// (y_ws mm, yaw rad, F_z N) of the ramp.
+fn ramp() -> Vec<(f64, f64, f64)> {
+    let mut v = vec![];
+    let mut y = -3.0;
+    let mut i = 0usize;
+    while y <= 6.0 + 1e-9 {
+        v.push((y, 1.2e-3 * y, FZ));
+        y += 0.01 * (1 + i % 5) as f64;
+        i += 1;
+    }
+    v
+}
+
+/// 0.3 s of the hunting-like series at 1 kHz.
+fn hunting() -> Vec<(f64, f64, f64)> {
+    let tau = std::f64::consts::TAU;
+    let yaw_amp = tau * 4.0 / (100.0 / 3.6 * 1000.0);
+    (0..300)
+        .map(|i| {
+            let t = i as f64 * 1e-3;
+            (
+                4.0 * (tau * t).sin(),
+                yaw_amp * (tau * t).cos(),
+                FZ * (1.0 + 0.1 * (tau * t / 0.3).sin()),
+            )
+        })
+        .collect()
+}
+
+type Res = WheelResult<f64, 4, 4>;
+
+/// Asserts the bound of the module docs; returns the largest |ΔF|/(μ F_z).
+fn assert_close(c: &Res, w: &Res, fz: f64, what: &str) -> f64 {
+    assert!(c.converged && w.converged, "{what}: not converged");
+    assert_eq!(c.n, w.n, "{what}: patch count");
+    let ddv = (w.vertical_approach / c.vertical_approach - 1.0).abs();
+    assert!(ddv <= 5e-5, "{what}: δ_v {ddv:e}");
+    let mut worst = 0.0f64;
+    for (pc, pw) in c.patches[..c.n]
+        .iter()
+        .flatten()
+        .zip(w.patches[..w.n].iter().flatten())
+    {
+        // the same patches in the same order: reference points a tolerance apart
+        assert!(
+            (pc.frame.y_ref_rail - pw.frame.y_ref_rail).abs() < 1e-3,
+            "{what}: patch order"
+        );
+        let (tc, tw) = (&pc.result.totals, &pw.result.totals);
+        let df = ((tw.fx - tc.fx).powi(2) + (tw.fy - tc.fy).powi(2)).sqrt() / (MU * fz);
+        let dn = (pw.load - pc.load).abs();
+        assert!(df <= 1.5e-4, "{what}: |ΔF|/(μFz) {df:e}");
+        assert!(dn / fz <= 5e-5, "{what}: |ΔN|/Fz {:e}", dn / fz);
+        let rel = 2.0 * dn / pc.load + 1e-6;
+        let dp = (pw.result.pmax / pc.result.pmax - 1.0).abs();
+        let da = (pw.result.area / pc.result.area - 1.0).abs();
+        assert!(dp <= rel, "{what}: pmax {dp:e} > {rel:e}");
+        assert!(da <= rel, "{what}: area {da:e} > {rel:e}");
+        worst = worst.max(df);
+    }
+    worst
+}
+
+fn series(name: &str, steps: &[(f64, f64, f64)], s: &Setup) {
+    let mut ws_c = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut ws_w = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut ws_x = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut st = WheelState::<f64, 4>::new();
+    let (mut geo_c, mut geo_w) = (0u32, 0u32);
+    let mut worst = 0.0f64;
+    for (i, &(y, yaw, fz)) in steps.iter().enumerate() {
+        let g = s.place(y, yaw);
+        let c = solve_wheel(&g, fz, &s.mat, &s.cfg, &mut ws_c, &mut ()).unwrap();
+        let before = st;
+        let w = solve_wheel_warm(&g, fz, &s.mat, &s.cfg, &mut ws_w, &mut st, &mut ()).unwrap();
+        if i == 0 {
+            assert!(!before.is_warm());
+            assert_eq!(
+                c, w,
+                "{name}: a cold state must reproduce solve_wheel bit for bit"
+            );
+        }
+        assert!(
+            st.is_warm(),
+            "{name} step {i}: a converged call leaves a warm state"
+        );
+        if i % 25 == 7 {
+            // pure function of (inputs, state in): another workspace, another history
+            let mut st2 = before;
+            let w2 =
+                solve_wheel_warm(&g, fz, &s.mat, &s.cfg, &mut ws_x, &mut st2, &mut ()).unwrap();
+            assert_eq!(
+                w, w2,
+                "{name} step {i}: warm result depends on more than the state"
+            );
+        }
+        geo_c += c.geometry_calls;
+        geo_w += w.geometry_calls;
+        worst = worst.max(assert_close(
+            &c,
+            &w,
+            fz,
+            &format!("{name} step {i} y {y:.2}"),
+        ));
+    }
+    println!(
+        "{name}: {} steps, geometry passes cold {geo_c} warm {geo_w}, max |ΔF|/(μFz) {worst:.2e}",
+        steps.len()
+    );
+    // measured: ramp 2.7 k → 1.3 k passes, hunting 7.3 k → 4.1 k per 1000 steps
+    assert!(
+        (geo_w as f64) < 0.8 * geo_c as f64,
+        "{name}: warm start saves no geometry passes ({geo_w} vs {geo_c})"
+    );
+}
+
+#[test]
+fn warm_start_agrees_with_cold_along_a_ramp() {
+    let s = Setup::new();
+    series("ramp", &ramp(), &s);
+}
+
+#[test]
+fn warm_start_agrees_with_cold_along_hunting() {
+    let s = Setup::new();
+    series("hunting", &hunting(), &s);
+}
+
+#[test]
+fn failed_call_leaves_the_state_cold() {
+    let s = Setup::new();
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut st = WheelState::<f64, 4>::new();
+    let g = s.place(1.0, 1.2e-3);
+    solve_wheel_warm(&g, FZ, &s.mat, &s.cfg, &mut ws, &mut st, &mut ()).unwrap();
+    assert!(st.is_warm());
+    assert!(st.vertical_approach().unwrap() > 0.0);
+    assert!(st.patches() >= 1 && st.patch(0).is_some());
+    for bad in [f64::NAN, -1.0, 0.0] {
+        let mut st2 = st;
+        assert!(solve_wheel_warm(&g, bad, &s.mat, &s.cfg, &mut ws, &mut st2, &mut ()).is_err());
+        assert!(
+            !st2.is_warm(),
+            "F_z {bad}: state must be cold after an error"
+        );
+        assert!(st2.patch(0).is_none());
+    }
+    // after a reset the next call is the cold one again
+    let mut st3 = st;
+    st3.reset();
+    let w = solve_wheel_warm(&g, FZ, &s.mat, &s.cfg, &mut ws, &mut st3, &mut ()).unwrap();
+    let c = solve_wheel(&g, FZ, &s.mat, &s.cfg, &mut ws, &mut ()).unwrap();
+    assert_eq!(c, w);
+}
