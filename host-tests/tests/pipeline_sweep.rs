@@ -6,7 +6,8 @@
 //!
 //! Default run: 83.3 kN (40 cases); all three loads with `-- --ignored` (120 cases).
 //! Asserts: every case solves with the load carried and the frame fixed point converged; f32
-//! against f64 over the whole sweep: F_x, F_y within 1e-3 of μF_n. The table goes to
+//! against f64 over the whole sweep (pipeline alone and end to end): F_x, F_y within 1e-3 of
+//! μF_n. The table goes to
 //! `out/pipeline_sweep.txt` and stdout.
 
 use std::fmt::Write as _;
@@ -212,12 +213,11 @@ fn sweep(loads: &[f64], file: &str) {
         .unwrap();
     std::fs::create_dir_all(root.join("out")).unwrap();
     std::fs::write(root.join("out").join(file), &txt).unwrap();
-    // The STRIPES/AC/FaStrip/wear pipeline in f32 against f64 on the same geometry samples: the
-    // issue's 1e-3 μFn. End to end (f32 geometry included) one case misses it: 1360 mm, left
-    // wheel, dy = 0, 120 kN (5.3e-3; its mirror, the right wheel, 9e-5): the flat-topped (plateau)
-    // gap of that case is resolved in f32 from track coordinates of ~700 mm (absolute rounding
-    // ~5e-5 mm, comparable to the gap's variation over the plateau), which moves the weighted
-    // reference point. That is the f32 geometry's resolution, reported, not asserted here.
+    // The STRIPES/AC/FaStrip/wear pipeline in f32 against f64 on the same geometry samples, and
+    // end to end with the f32 geometry: the 1e-3 μFn. (End to end once missed it on the
+    // flat-topped gap of 1360 mm, left wheel, dy = 0, 120 kN, 5.3e-3, while the geometry summed
+    // ≈ 700 mm track coordinates in f32; it works in local coordinates since: 8.7e-4 worst over
+    // the 120 cases, 7.3e-4 over the default 40.)
     assert!(worst_pipe <= 1e-3, "{worst_pipe}");
-    assert!(worst <= 1e-2, "{worst}");
+    assert!(worst <= 1e-3, "{worst}");
 }

@@ -69,8 +69,8 @@ impl<T: Real, const N: usize> Ctx<'_, '_, T, N> {
 
     /// Evaluates the pair (tr, tw).
     fn eval(&self, tr: T, tw: T) -> IsoscelesPair<T> {
-        let a = self.rail.at(tr);
-        let b = self.wheel.at(tw);
+        let a = self.rail.at_local(tr);
+        let b = self.wheel.at_local(tw);
         let (dy, dz) = (b.y - a.y, b.z - a.z);
         let dl = math::hypot(dy, dz);
         let (ta_y, ta_z) = (math::cos(a.angle), math::sin(a.angle));
@@ -119,8 +119,8 @@ impl<T: Real, const N: usize> Ctx<'_, '_, T, N> {
         let mut it = 0;
         for i in 0..20 {
             it = i;
-            let a = self.rail.at(tr);
-            let b = self.wheel.at(tw);
+            let a = self.rail.at_local(tr);
+            let b = self.wheel.at_local(tw);
             let dl = math::hypot(b.y - a.y, b.z - a.z);
             if math::abs(p.delta_theta) < tol || dl < math::c(1e-12) {
                 break;
@@ -141,8 +141,8 @@ impl<T: Real, const N: usize> Ctx<'_, '_, T, N> {
 
     /// Stepping factor c = σ·½(T_A + T_B)·t̂ (ds_mid / dh).
     fn step_factor(&self, tr: T, tw: T) -> T {
-        let a = self.rail.at(tr);
-        let b = self.wheel.at(tw);
+        let a = self.rail.at_local(tr);
+        let b = self.wheel.at_local(tw);
         let my = (math::cos(a.angle) + math::cos(b.angle)) * T::HALF;
         let mz = (math::sin(a.angle) + math::sin(b.angle)) * T::HALF;
         self.fr.sigma * (my * self.fr.c + mz * self.fr.sn)
@@ -182,11 +182,11 @@ pub(crate) fn separation_at<T: Real, const N: usize>(
 ) -> Option<T> {
     let ctx = Ctx { rail, wheel, fr };
     let rpos = |t: T| {
-        let p = rail.at(t);
+        let p = rail.at_local(t);
         (p.y, p.z)
     };
     let wpos = |t: T| {
-        let p = wheel.at(t);
+        let p = wheel.at_local(t);
         (p.y, p.z)
     };
     let tr = super::patch::solve_s(&rpos, fr, rail.table.len, tr_ref, s)?;
@@ -210,11 +210,11 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
 ) -> Result<(), Error> {
     let ctx = Ctx { rail, wheel, fr };
     let rpos = |t: T| {
-        let p = rail.at(t);
+        let p = rail.at_local(t);
         (p.y, p.z)
     };
     let wpos = |t: T| {
-        let p = wheel.at(t);
+        let p = wheel.at_local(t);
         (p.y, p.z)
     };
     let s_first = out.s(0);
@@ -231,8 +231,8 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
         }
         tr = p.t_rail;
         tw = p.t_wheel;
-        let a = rail.at(tr);
-        let b = wheel.at(tw);
+        let a = rail.at_local(tr);
+        let b = wheel.at_local(tw);
         out.f_n[i] = p.separation;
         out.angle[i] = b.angle;
         out.radius[i] = b.radius;
@@ -247,7 +247,7 @@ pub(crate) fn sample_isosceles<T: Real, const N: usize, const S: usize>(
         } else {
             out.ds
         };
-        out.y_rail[i] = a.y;
+        out.y_rail[i] = a.y + rail.y_origin();
         out.x_c[i] = b.x - x_ref;
     }
     Ok(())
@@ -280,18 +280,30 @@ pub fn isosceles_rigid_pair<T: Real, const N: usize, const M: usize>(
         fr: &fr,
     };
     let rpos = |t: T| {
-        let p = rail.at(t);
+        let p = rail.at_local(t);
         (p.y, p.z)
     };
     let wpos = |t: T| {
-        let p = wheel.at(t);
+        let p = wheel.at_local(t);
         (p.y, p.z)
     };
     let y_ref = fr.py;
-    let tr0 = super::patch::solve_s(&rpos, &fr, rail.table.len, geom.rail_t_at(y_ref), s_lo)
-        .ok_or(Error::NoContact)?;
-    let tw0 = super::patch::solve_s(&wpos, &fr, wheel.table.len, geom.wheel_t_at(y_ref), s_lo)
-        .ok_or(Error::NoContact)?;
+    let tr0 = super::patch::solve_s(
+        &rpos,
+        &fr,
+        rail.table.len,
+        geom.rail_t_at_local(y_ref),
+        s_lo,
+    )
+    .ok_or(Error::NoContact)?;
+    let tw0 = super::patch::solve_s(
+        &wpos,
+        &fr,
+        wheel.table.len,
+        geom.wheel_t_at_local(y_ref),
+        s_lo,
+    )
+    .ok_or(Error::NoContact)?;
     let half_pi = T::PI * T::HALF;
     let ds = (s_hi - s_lo) / T::from_usize(steps);
     let mut prev = ctx.pair_at(tr0, tw0, s_lo);

@@ -346,7 +346,7 @@ fn accumulate<T: Real, const N: usize, const M: usize>(
             _ => g * g * math::sqrt(g),
         };
         a.w += w;
-        a.wy += w * geom.y_at(jj);
+        a.wy += w * geom.y_local_at(jj);
         a.wa += w * geom.rail_angle[jj];
         a.wx += w * geom.wheel_x[jj];
     }
@@ -372,7 +372,7 @@ fn crossing<T: Real, const N: usize, const M: usize>(
     let gb = dv - g.gap[b];
     let den = ga - gb;
     let u = if den != T::ZERO { ga / den } else { T::HALF };
-    let (ya, yb) = (g.y_at(a), g.y_at(b));
+    let (ya, yb) = (g.y_local_at(a), g.y_local_at(b));
     ya + math::clamp(u, T::ZERO, T::ONE) * (yb - ya)
 }
 
@@ -441,12 +441,12 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
         let y_lo = if j0 > 0 {
             crossing(geom, dv, j0 - 1, j0)
         } else {
-            geom.y_at(0)
+            geom.y_local_at(0)
         };
         let y_hi = if j1 + 1 < n {
             crossing(geom, dv, j1, j1 + 1)
         } else {
-            geom.y_at(n - 1)
+            geom.y_local_at(n - 1)
         };
         let mut a = Acc {
             j0,
@@ -509,8 +509,8 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
                     p = math::clamp((ga - gc) / (T::TWO * den), -T::HALF, T::HALF);
                 }
             }
-            a.y_ref = geom.y_at(jmin) + p * geom.dy;
-            a.angle = geom.interp(&geom.rail_angle, a.y_ref);
+            a.y_ref = geom.y_local_at(jmin) + p * geom.dy;
+            a.angle = geom.interp_local(&geom.rail_angle, a.y_ref);
         }
     }
     // 4: turning
@@ -551,7 +551,8 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
         build_patch(geom, dv, a.y_ref, turned[k], a.angle, opts, p)?;
         p.frame.weight = a.w;
         p.frame.x_ref = x_ref;
-        p.frame.overlap_y = [a.y_lo, a.y_hi];
+        let org = geom.rail.y_origin();
+        p.frame.overlap_y = [a.y_lo + org, a.y_hi + org];
         p.frame.components = a.comps;
         // overlap extent in s
         let s_a = frame_s(geom, &p.frame, a.y_lo);
@@ -575,7 +576,7 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
     Ok(())
 }
 
-/// Frame geometry in S: reference point P (S), tangent t̂ = (cos δ, sin δ), normal
+/// Frame geometry in S (lateral positions local: y_S − `rail.y_origin()`): reference point P, tangent t̂ = (cos δ, sin δ), normal
 /// n̂ = (−sin δ, cos δ), and the sign σ with s = σ (p − P)·t̂.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct FrameS<T> {
@@ -592,9 +593,12 @@ impl<T: Real> FrameS<T> {
         f: &PatchFrame<T>,
     ) -> Self {
         let sigma: T = geom.side.sign();
+        // the reference point from its rail-profile coordinates: local lateral position (no
+        // ≈ 700 mm track coordinate rounded in), z_S as in `f.z_ref_track`
+        let (py, pz) = geom.rail.local_of_profile(f.y_ref_rail, f.z_ref_rail);
         FrameS {
-            py: sigma * f.y_ref_track,
-            pz: f.z_ref_track,
+            py,
+            pz,
             c: math::cos(f.angle),
             sn: math::sin(f.angle),
             sigma,
@@ -618,7 +622,7 @@ fn frame_s<T: Real, const N: usize, const M: usize>(
     y: T,
 ) -> T {
     let fr = FrameS::new(geom, f);
-    let p = geom.rail.at(geom.rail_t_at(y));
+    let p = geom.rail.at_local(geom.rail_t_at_local(y));
     fr.s(p.y, p.z)
 }
 
@@ -631,13 +635,13 @@ fn build_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     _opts: &PatchOptions<T>,
     p: &mut Patch<T, S>,
 ) -> Result<(), Error> {
-    let tr = geom.rail_t_at(y_ref);
-    let rp = geom.rail.at(tr);
+    let tr = geom.rail_t_at_local(y_ref);
+    let rp = geom.rail.at_local(tr);
     let sigma: T = geom.side.sign();
     let f = &mut p.frame;
     f.y_ref_rail = rp.profile.y;
     f.z_ref_rail = rp.profile.z;
-    f.y_ref_track = sigma * rp.y;
+    f.y_ref_track = sigma * (rp.y + geom.rail.y_origin());
     f.z_ref_track = rp.z;
     f.angle = angle;
     f.angle_own = angle_own;
@@ -772,19 +776,19 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
     let wcache = Cell::new(SegmentCache::new());
     let rpos = |t: T| {
         let mut c = rcache.get();
-        let p = rail.pos_cached(t, &mut c);
+        let p = rail.pos_local_cached(t, &mut c);
         rcache.set(c);
         p
     };
     let wpos = |t: T| {
         let mut c = wcache.get();
-        let p = wheel.pos_cached(t, &mut c);
+        let p = wheel.pos_local_cached(t, &mut c);
         wcache.set(c);
         p
     };
     let y_ref_s = fr.py;
-    let tr_ref = geom.rail_t_at(y_ref_s);
-    let tw_ref = geom.wheel_t_at(y_ref_s);
+    let tr_ref = geom.rail_t_at_local(y_ref_s);
+    let tw_ref = geom.wheel_t_at_local(y_ref_s);
     // rolling radius and wheel reference point: projection pair at s = 0
     // node caches of the root searches in this frame (one per curve)
     let rnodes = Cell::new(NodeS::new());
@@ -814,15 +818,15 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
                     .ok_or(Error::NoContact)?;
                 tw = solve_s_nodes(&wpos, &fr, wheel.table.len, tw, s, &wnodes)
                     .ok_or(Error::NoContact)?;
-                let rp = rail.at_cached(tr, &mut rc2);
-                let wp = wheel.at_cached(tw, &mut wc2);
+                let rp = rail.at_local_cached(tr, &mut rc2);
+                let wp = wheel.at_local_cached(tw, &mut wc2);
                 out.f_n[i] = fr.n(wp.y, wp.z) - fr.n(rp.y, rp.z);
                 out.angle[i] = wp.angle;
                 out.radius[i] = wp.radius;
                 out.a_long[i] = math::cos(wp.angle) / (T::TWO * wp.radius);
                 out.b_lat[i] = T::HALF * (wp.curvature + rp.curvature);
                 out.width[i] = out.ds;
-                out.y_rail[i] = rp.y;
+                out.y_rail[i] = rp.y + rail.y_origin();
                 out.x_c[i] = wp.x - frame.x_ref;
                 if i == 0 || out.f_n[i] < best {
                     best = out.f_n[i];
@@ -921,7 +925,7 @@ pub fn patches_at_normal_approach<
     out: &mut Patches<T, K, S>,
 ) -> Result<(usize, bool), Error> {
     crate::error::check_positive(dn, "normal approach")?;
-    let a0 = geom.interp(&geom.rail_angle, geom.y_rigid);
+    let a0 = geom.interp_local(&geom.rail_angle, geom.y_rigid_local());
     let mut dv = dn / math::max(math::cos(a0), math::c(0.05));
     let tol = if T::EPSILON < math::c(1e-10) {
         math::c::<T>(1e-9)

@@ -219,12 +219,20 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         y * self.cos_a + z * self.sin_a + self.ty
     }
 
-    /// [`Self::at`] with a segment cache.
-    pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> RailPoint<T> {
+    /// Lateral origin of the local coordinates, mm: y_S = y_local + `y_origin()`. The geometry
+    /// works in local lateral coordinates (the rail profile's origin placed in S), so f32 does
+    /// not carry the rounding of the ≈ 700 mm track coordinates into gaps and separations.
+    #[inline]
+    pub fn y_origin(&self) -> T {
+        self.ty
+    }
+
+    /// [`Self::at_cached`] in local lateral coordinates (`y` is y_S − [`Self::y_origin`]).
+    pub(crate) fn at_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> RailPoint<T> {
         let p = self.table.point_cached(t, cache);
         let (qy, qz) = (p.y, -p.z);
         RailPoint {
-            y: qy * self.cos_a - qz * self.sin_a + self.ty,
+            y: qy * self.cos_a - qz * self.sin_a,
             z: qy * self.sin_a + qz * self.cos_a + self.tz,
             angle: self.cant - p.angle,
             curvature: p.curvature,
@@ -233,15 +241,60 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
         }
     }
 
+    /// [`Self::at`] in local lateral coordinates.
+    pub(crate) fn at_local(&self, t: T) -> RailPoint<T> {
+        self.at_local_cached(t, &mut SegmentCache::new())
+    }
+
+    /// [`Self::at`] with a segment cache.
+    pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> RailPoint<T> {
+        let mut p = self.at_local_cached(t, cache);
+        p.y += self.ty;
+        p
+    }
+
     /// Position (y_S, z_S) at parameter `t` (cached), without the angle of [`Self::at_cached`].
     #[inline]
     pub fn pos_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
+        let (y, z) = self.pos_local_cached(t, cache);
+        (y + self.ty, z)
+    }
+
+    /// [`Self::pos_cached`] in local lateral coordinates.
+    #[inline]
+    pub(crate) fn pos_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
         let (y, z) = self.table.hermite_pos(t, cache);
         let (qy, qz) = (y, -z);
         (
-            qy * self.cos_a - qz * self.sin_a + self.ty,
+            qy * self.cos_a - qz * self.sin_a,
             qy * self.sin_a + qz * self.cos_a + self.tz,
         )
+    }
+
+    /// A point given in the rail profile file's coordinates (y, z) in the side frame S:
+    /// (local lateral position, z_S), mm — the values [`Self::at_cached`] gives for the curve
+    /// point with these profile coordinates (with y local).
+    #[inline]
+    pub(crate) fn local_of_profile(&self, y: T, z: T) -> (T, T) {
+        let (qy, qz) = (y, -z);
+        (
+            qy * self.cos_a - qz * self.sin_a,
+            qy * self.sin_a + qz * self.cos_a + self.tz,
+        )
+    }
+
+    /// Local lateral position at parameter `t` (root finding; cached).
+    #[inline]
+    pub(crate) fn y_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
+        let (y, z) = self.table.hermite_pos(t, cache);
+        y * self.cos_a + z * self.sin_a
+    }
+
+    /// Local lateral position of node `i` (exact node value).
+    #[inline]
+    fn node_y_local(&self, i: usize) -> T {
+        let i = i.min(N - 1);
+        self.table.y[i] * self.cos_a + self.table.z[i] * self.sin_a
     }
 
     /// Height z_S of node `i` (exact node value, no interpolation).
@@ -249,13 +302,6 @@ impl<'a, T: Real, const N: usize> PlacedRail<'a, T, N> {
     fn node_z(&self, i: usize) -> T {
         let i = i.min(N - 1);
         self.table.y[i] * self.sin_a - self.table.z[i] * self.cos_a + self.tz
-    }
-
-    /// Lateral position y_S of node `i`.
-    #[inline]
-    fn node_y(&self, i: usize) -> T {
-        let i = i.min(N - 1);
-        self.table.y[i] * self.cos_a + self.table.z[i] * self.sin_a + self.ty
     }
 
     /// Places the rail: top at z = 0, gauge face at y_S = gauge/2 (see module docs).
@@ -370,6 +416,17 @@ pub struct PlacedWheel<'a, T, const N: usize> {
     cz_off: T,
     /// The value of `cz` when `cz_off` was last set, mm.
     cz_ref: T,
+    /// Lateral origin of the local coordinates (the rail's, [`PlacedRail::y_origin`]), mm.
+    y_org: T,
+    /// cos φ cos ψ and sin φ cos ψ.
+    cc: T,
+    sc: T,
+    /// Lateral offset of the local positions: y_S − y_org = x1 sψ + e_y cφcψ + r cθ sφcψ +
+    /// `cy_off` + (`cy` − `cy_ref`), with `cy_off` = (u_off − y_org) − u_off (1 − cφcψ) + cy
+    /// computed without the ≈ 700 mm magnitudes, mm.
+    cy_off: T,
+    /// The value of `cy` when `cy_off` was set, mm.
+    cy_ref: T,
 }
 
 impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
@@ -383,7 +440,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         if table.kind != ProfileKind::Wheel {
             return Err(Error::BadProfile("wheel table expected"));
         }
-        Ok(Self::posed(table, setup, pose, side))
+        Ok(Self::posed(table, setup, pose, side, T::ZERO))
     }
 
     /// The wheel of a validated table at a checked pose (no validation).
@@ -392,6 +449,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         setup: &TrackSetup<T>,
         pose: &WheelsetPose<T>,
         side: Side,
+        y_org: T,
     ) -> Self {
         let s: T = side.sign();
         let phi = s * pose.roll;
@@ -401,9 +459,16 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let a = cpsi;
         let b = sphi * spsi;
         let norm = math::hypot(a, b);
+        let u_off = setup.back_to_back * T::HALF - setup.flange_back_pos;
+        let omc_phi = sphi * sphi / (T::ONE + cphi);
+        let omc_psi = spsi * spsi / (T::ONE + cpsi);
+        let cy = s * pose.dy;
+        // u cφcψ − y_org = e_y cφcψ + (u_off − y_org) − u_off (1 − cφcψ): the difference of the
+        // two ≈ 700 mm numbers is exact (Sterbenz) or nearly so
+        let cy_off = (u_off - y_org) - u_off * (omc_phi + cphi * omc_psi) + cy;
         PlacedWheel {
             table,
-            u_off: setup.back_to_back * T::HALF - setup.flange_back_pos,
+            u_off,
             r0: setup.r0,
             cphi,
             sphi,
@@ -413,11 +478,16 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             // |ψ| ≤ 0.2 rad (checked), so a = cos ψ > 0.98 and norm > 0
             st0: b / norm,
             ct0: a / norm,
-            cy: s * pose.dy,
+            cy,
             cz: T::ZERO,
-            omc_phi: sphi * sphi / (T::ONE + cphi),
+            omc_phi,
             cz_off: T::ZERO,
             cz_ref: T::ZERO,
+            y_org,
+            cc: cphi * cpsi,
+            sc: sphi * cpsi,
+            cy_off,
+            cy_ref: cy,
         }
     }
 
@@ -439,7 +509,19 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
             omc_phi: T::ZERO,
             cz_off: T::ZERO,
             cz_ref: T::ZERO,
+            y_org: T::ZERO,
+            cc: T::ONE,
+            sc: T::ZERO,
+            cy_off: T::ZERO,
+            cy_ref: T::ZERO,
         }
+    }
+
+    /// Local lateral position (y_S − y_org) of the wheel point with profile coordinate `ey`,
+    /// radius `r` (mm) at the lowest-point angle (sin θ, cos θ).
+    #[inline]
+    fn lateral(&self, ey: T, r: T, st: T, ct: T) -> T {
+        r * st * self.spsi + ey * self.cc + r * ct * self.sc + self.cy_off + (self.cy - self.cy_ref)
     }
 
     /// The wheel lowered rigidly by `dv` (mm, downwards) from this position.
@@ -510,30 +592,35 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
     /// of [`Self::at_cached`]: what root finding on the placed curve needs.
     #[inline]
     pub fn pos_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
+        let (y, z) = self.pos_local_cached(t, cache);
+        (y + self.y_org, z)
+    }
+
+    /// [`Self::pos_cached`] in local lateral coordinates (y_S − [`PlacedRail::y_origin`]).
+    #[inline]
+    pub(crate) fn pos_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T) {
         let e = self.table.hermite(t, cache);
         let u = e.y + self.u_off;
         let r = self.r0 + e.z;
         let (st, ct) = self.lowest(e.tc, e.ts);
-        let x1 = r * st;
-        let y1 = u * self.cphi + r * ct * self.sphi;
-        (
-            x1 * self.spsi + y1 * self.cpsi + self.cy,
-            self.height(u, e.z, st, ct),
-        )
+        (self.lateral(e.y, r, st, ct), self.height(u, e.z, st, ct))
     }
 
     /// Lateral position y_S of the lowest point for parameter `t` (root finding; cached).
     pub fn y_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
-        let e: HermitePoint<T> = self.table.hermite(t, cache);
-        let u = e.y + self.u_off;
-        let r = self.r0 + e.z;
-        let (st, ct) = self.lowest(e.tc, e.ts);
-        let x1 = r * st;
-        let y1 = u * self.cphi + r * ct * self.sphi;
-        x1 * self.spsi + y1 * self.cpsi + self.cy
+        self.y_local_cached(t, cache) + self.y_org
     }
 
-    /// Lateral position y_S of the lowest point for parameter `t`, an approximation of dy_S/dt
+    /// [`Self::y_cached`] in local lateral coordinates.
+    #[inline]
+    fn y_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> T {
+        let e: HermitePoint<T> = self.table.hermite(t, cache);
+        let r = self.r0 + e.z;
+        let (st, ct) = self.lowest(e.tc, e.ts);
+        self.lateral(e.y, r, st, ct)
+    }
+
+    /// Local lateral position y_S − y_org of the lowest point for parameter `t`, an approximation of dy_S/dt
     /// (exact without yaw; with yaw the turn of the lowest point's angle θ along the curve is left
     /// out, a relative error of order ψ²·r·κ) for Newton root finding, and the point's z_S and
     /// longitudinal position x (the values of [`Self::at_cached`]).
@@ -545,7 +632,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let (st, ct) = self.lowest(e.tc, e.ts);
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
-        let y = x1 * self.spsi + y1 * self.cpsi + self.cy;
+        let y = self.lateral(e.y, r, st, ct);
         let d = dz * st * self.spsi + (dy * self.cphi + dz * ct * self.sphi) * self.cpsi;
         (
             y,
@@ -555,8 +642,8 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         )
     }
 
-    /// Position (y_S, z_S) of the lowest point and its longitudinal position x for parameter
-    /// `t` (cached): the values of [`Self::at_cached`] without the angles.
+    /// Local position (y_S − y_org, z_S) of the lowest point and its longitudinal position x
+    /// for parameter `t` (cached): the values of [`Self::at_cached`] without the angles.
     #[inline]
     fn pos_x_cached(&self, t: T, cache: &mut SegmentCache<T>) -> (T, T, T) {
         let e = self.table.hermite(t, cache);
@@ -566,7 +653,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let x1 = r * st;
         let y1 = u * self.cphi + r * ct * self.sphi;
         (
-            x1 * self.spsi + y1 * self.cpsi + self.cy,
+            self.lateral(e.y, r, st, ct),
             self.height(u, e.z, st, ct),
             x1 * self.cpsi - y1 * self.spsi,
         )
@@ -574,6 +661,18 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
 
     /// [`Self::at`] with a segment cache.
     pub fn at_cached(&self, t: T, cache: &mut SegmentCache<T>) -> WheelPoint<T> {
+        let mut p = self.at_local_cached(t, cache);
+        p.y += self.y_org;
+        p
+    }
+
+    /// [`Self::at`] in local lateral coordinates (y_S − [`PlacedRail::y_origin`]).
+    pub(crate) fn at_local(&self, t: T) -> WheelPoint<T> {
+        self.at_local_cached(t, &mut SegmentCache::new())
+    }
+
+    /// [`Self::at_cached`] in local lateral coordinates.
+    pub(crate) fn at_local_cached(&self, t: T, cache: &mut SegmentCache<T>) -> WheelPoint<T> {
         let e = self.table.hermite(t, cache);
         let p = CurvePoint {
             y: e.y,
@@ -593,7 +692,7 @@ impl<'a, T: Real, const N: usize> PlacedWheel<'a, T, N> {
         let nz1 = ny * self.sphi + nz * self.cphi;
         let ny2 = nx * self.spsi + ny1 * self.cpsi;
         WheelPoint {
-            y: x1 * self.spsi + y1 * self.cpsi + self.cy,
+            y: self.lateral(p.y, r, st, ct),
             z: self.height(u, p.z, st, ct),
             x: x1 * self.cpsi - y1 * self.spsi,
             angle: math::atan2(ny2, -nz1),
@@ -783,6 +882,10 @@ pub struct WheelRail<'a, T, const N: usize, const M: usize> {
     pub raw_min: T,
     /// Grid step requested at placement, mm ([`Self::reposition`] starts from it again).
     step: T,
+    /// `y0` in local lateral coordinates (y_S − `rail.y_origin()`), mm.
+    y0_local: T,
+    /// `y_rigid` in local lateral coordinates, mm.
+    y_rigid_local: T,
 }
 
 impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
@@ -838,6 +941,8 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
             y_rigid: T::ZERO,
             raw_min: T::ZERO,
             step: T::ZERO,
+            y0_local: T::ZERO,
+            y_rigid_local: T::ZERO,
         }
     }
 
@@ -898,7 +1003,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         }
         self.n = 0;
         pose.check()?;
-        self.wheel = PlacedWheel::posed(self.wheel.table, &self.setup, pose, side);
+        self.wheel = PlacedWheel::posed(self.wheel.table, &self.setup, pose, side, self.rail.ty);
         self.side = side;
         self.pose = *pose;
         self.dy = self.step;
@@ -919,12 +1024,12 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         // The wheel's node values need the node tangents (lowest point under yaw): a scan cache
         // of its own that only marches forward, so the Newton steps' cache is not thrashed.
         let mut cw_scan = SegmentCache::new();
-        let mut fy_w = |k: usize| wheel.y_cached(T::from_usize(k), &mut cw_scan);
+        let mut fy_w = |k: usize| wheel.y_local_cached(T::from_usize(k), &mut cw_scan);
         // lateral windows on which each placed curve is monotone in y_S: around the rail top and
         // around the wheel's tape circle (y_w = 0); side faces that overhang after cant, roll or
         // yaw are cut off there
         let k_top = (T::to_f64(math::floor(rail.t_top)) as usize).min(rl - 1);
-        let (rk0, rk1) = monotone_window(|k| rail.node_y(k), rl, k_top);
+        let (rk0, rk1) = monotone_window(|k| rail.node_y_local(k), rl, k_top);
         let mut k_tape = 0usize;
         for k in 0..wl {
             if self.wheel.table.y[k.min(N - 1)] <= T::ZERO {
@@ -939,8 +1044,8 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
                 "profile not monotone in y near the contact",
             ));
         }
-        let r_lo = rail.node_y(rk0);
-        let r_hi = rail.node_y(rk1);
+        let r_lo = rail.node_y_local(rk0);
+        let r_hi = rail.node_y_local(rk1);
         let w_lo = fy_w(wk0);
         let w_hi = fy_w(wk1);
         if !(math::is_finite(w_lo) && math::is_finite(w_hi)) {
@@ -966,15 +1071,24 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         }
         self.n = n;
         self.dy = step;
-        self.y0 = lo;
-        // Newton converges quadratically: stop at a few rounding units of the coordinate
-        let tol = math::c::<T>(4.0) * T::EPSILON * math::max(math::abs(lo), math::abs(hi));
+        self.y0_local = lo;
+        self.y0 = lo + rail.ty;
+        // Newton converges quadratically: stop at a few rounding units of the local lateral
+        // coordinates and of the terms they are summed from
+        let wt = wheel.table;
+        let scale = math::max(math::abs(lo), math::abs(hi))
+            + math::abs(wheel.cy_off)
+            + math::max(
+                math::abs(wt.y[wk0.min(N - 1)]),
+                math::abs(wt.y[wk1.min(N - 1)]),
+            );
+        let tol = math::c::<T>(4.0) * T::EPSILON * scale;
         let (mut kr, mut kw) = (rk0, wk0);
         // node values of the rail: exact node coordinates (what the Hermite curve gives there)
-        let mut fy_r = |k: usize| rail.node_y(k);
+        let mut fy_r = |k: usize| rail.node_y_local(k);
         let mut fr = (fy_r(rk0), fy_r(rk0 + 1));
         let mut cw_scan2 = SegmentCache::new();
-        let mut fy_w = |k: usize| wheel.y_cached(T::from_usize(k), &mut cw_scan2);
+        let mut fy_w = |k: usize| wheel.y_local_cached(T::from_usize(k), &mut cw_scan2);
         let mut fw = (fy_w(wk0), fy_w(wk0 + 1));
         let mut cr = SegmentCache::new();
         let mut cw = SegmentCache::new();
@@ -995,7 +1109,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
                     let (py, pz, dy, dz) = rail.table.hermite_pos_d(t, &mut cr);
                     last_r = (t, py, pz, dy, dz);
                     (
-                        py * rail.cos_a + pz * rail.sin_a + rail.ty - y,
+                        py * rail.cos_a + pz * rail.sin_a - y,
                         dy * rail.cos_a + dz * rail.sin_a,
                     )
                 },
@@ -1077,7 +1191,8 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         // the grid's wheel heights are z1 + r0 (local): raw minimum of z1 − z_rail is fmin − r0
         self.raw_min = fmin - self.wheel.r0;
         self.wheel.set_height(-fmin);
-        self.y_rigid = lo + (T::from_usize(jmin) + p) * step;
+        self.y_rigid_local = lo + (T::from_usize(jmin) + p) * step;
+        self.y_rigid = self.y_rigid_local + rail.ty;
         Ok(())
     }
 
@@ -1087,14 +1202,31 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
         self.y0 + T::from_usize(j) * self.dy
     }
 
+    /// Lateral position of grid point j in local coordinates (y_S − `rail.y_origin()`), mm.
+    #[inline]
+    pub(crate) fn y_local_at(&self, j: usize) -> T {
+        self.y0_local + T::from_usize(j) * self.dy
+    }
+
+    /// `y_rigid` in local lateral coordinates, mm.
+    #[inline]
+    pub(crate) fn y_rigid_local(&self) -> T {
+        self.y_rigid_local
+    }
+
     /// Rail curve parameter at lateral position `y` (S), by bracketing from the grid and
     /// regula falsi. Clamped to the grid range.
     pub fn rail_t_at(&self, y: T) -> T {
-        let (j, _) = self.grid_index(y);
+        self.rail_t_at_local(y - self.rail.ty)
+    }
+
+    /// [`Self::rail_t_at`] at a local lateral position.
+    pub(crate) fn rail_t_at_local(&self, y: T) -> T {
+        let (j, _) = self.grid_index_local(y);
         let (t0, t1) = (self.rail_t[j], self.rail_t[j + 1]);
         let rail = self.rail;
         let mut c = SegmentCache::new();
-        let mut f = |t: T| rail.y_cached(t, &mut c) - y;
+        let mut f = |t: T| rail.y_local_cached(t, &mut c) - y;
         let (f0, f1) = (f(t0), f(t1));
         let u = illinois(|u| f(t0 + u * (t1 - t0)), f0, f1, 40, math::c(1e-11));
         t0 + u * (t1 - t0)
@@ -1102,11 +1234,16 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
 
     /// Wheel curve parameter at lateral position `y` (S), touching configuration.
     pub fn wheel_t_at(&self, y: T) -> T {
-        let (j, _) = self.grid_index(y);
+        self.wheel_t_at_local(y - self.rail.ty)
+    }
+
+    /// [`Self::wheel_t_at`] at a local lateral position.
+    pub(crate) fn wheel_t_at_local(&self, y: T) -> T {
+        let (j, _) = self.grid_index_local(y);
         let (t0, t1) = (self.wheel_t[j], self.wheel_t[j + 1]);
         let wheel = self.wheel;
         let mut c = SegmentCache::new();
-        let mut f = |t: T| wheel.y_cached(t, &mut c) - y;
+        let mut f = |t: T| wheel.y_local_cached(t, &mut c) - y;
         let (f0, f1) = (f(t0), f(t1));
         let u = illinois(|u| f(t0 + u * (t1 - t0)), f0, f1, 40, math::c(1e-11));
         t0 + u * (t1 - t0)
@@ -1114,8 +1251,13 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
 
     /// Grid interval index j (0 ≤ j ≤ n−2) and local fraction for lateral position `y`.
     pub fn grid_index(&self, y: T) -> (usize, T) {
+        self.grid_index_local(y - self.rail.ty)
+    }
+
+    /// [`Self::grid_index`] for a local lateral position.
+    pub(crate) fn grid_index_local(&self, y: T) -> (usize, T) {
         let x = if self.dy > T::ZERO {
-            (y - self.y0) / self.dy
+            (y - self.y0_local) / self.dy
         } else {
             T::ZERO
         };
@@ -1132,7 +1274,12 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
 
     /// Linear interpolation of a grid array at lateral position `y`.
     pub fn interp(&self, arr: &[T; M], y: T) -> T {
-        let (j, u) = self.grid_index(y);
+        self.interp_local(arr, y - self.rail.ty)
+    }
+
+    /// [`Self::interp`] at a local lateral position.
+    pub(crate) fn interp_local(&self, arr: &[T; M], y: T) -> T {
+        let (j, u) = self.grid_index_local(y);
         arr[j] + u * (arr[j + 1] - arr[j])
     }
 
