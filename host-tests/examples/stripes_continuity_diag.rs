@@ -5,7 +5,9 @@
 //! `dump_samples` (`DY`), `load_scan` (`DY L0 L1 M`, optional `B2B LOADN`), `unfiltered_runs`
 //! (`DY LOADS`), `eps_curve`, `fine_regions` (`FROM TO STEP`, optional `B2B LOADN BFLOOR`: per-wheel
 //! solve, per region N, F_x, pmax, area), `sliver_scan` (`DV0 DV1 M BFLOOR`, optional `NLS ONLY0`:
-//! regions that carry no load after the strip re-solve, Manchester rows).
+//! regions that carry no load after the strip re-solve, Manchester rows). `INTER=0|1` sets
+//! `StripesConfig::interaction` in `debug_jump`, `fine_regions` and (for the wheel solve)
+//! `unfiltered_runs`.
 #![allow(clippy::needless_range_loop)]
 use wrc_host_tests::wheelrail::*;
 use wrc_kernel::geometry::Side;
@@ -31,6 +33,9 @@ fn debug_jump() {
         let mut cfg = StripesConfig::<f64>::recommended();
         if off {
             cfg.l0_mode = L0Mode::Off;
+        }
+        if let Ok(v) = std::env::var("INTER") {
+            cfg.interaction = v == "1";
         }
         let mut st = Box::new(Stripes::<f64, 128, 8, 4>::new());
         let s = &kp.stripes_samples;
@@ -213,12 +218,17 @@ fn unfiltered_runs() {
     let mat = Material::steel();
     let c = sweep_case(&w, &r, Side::Right, 1360.0, dy, 83_300.0).unwrap();
     let g = c.place(&w, &r).unwrap();
-    let (_res, kps) = solve_kernel_case(&g, 83_300.0, &mat, &c.config()).unwrap();
+    let inter = std::env::var("INTER").map_or(true, |v| v == "1");
+    let mut wc = c.config();
+    wc.pipeline.stripes.interaction = inter;
+    let (_res, kps) = solve_kernel_case(&g, 83_300.0, &mat, &wc).unwrap();
     let mut cfg = StripesConfig::<f64>::recommended();
     cfg.l0_mode = L0Mode::Off;
+    cfg.interaction = false;
     let mut st = Box::new(Stripes::<f64, 128, 8, 4>::new());
     let s = &kps[0].stripes_samples;
     for load in loads {
+        let load = if load > 0.0 { load } else { kps[0].load };
         let sol = st.solve(s, load, &mat, &cfg).unwrap();
         let b: Vec<String> = (0..sol.basins)
             .map(|q| {
@@ -315,6 +325,9 @@ fn fine_regions() {
         let c = sweep_case(&w, &r, Side::Right, b2b, dy, load).unwrap();
         let g = c.place(&w, &r).unwrap();
         let mut cfg = c.config();
+        if let Ok(v) = std::env::var("INTER") {
+            cfg.pipeline.stripes.interaction = v == "1";
+        }
         if let Ok(b) = std::env::var("BFLOOR") {
             cfg.pipeline.stripes.b_floor = b.parse().unwrap();
         }

@@ -1500,6 +1500,9 @@ proptest! {
             blend,
             b_min: bmin,
             b_floor: 0.0,
+            // the inter-region coupling on half of the cases (from an existing input, so that the
+            // generated sequence stays the same)
+            interaction: spr % 2 == 1,
         };
         if fastsim {
             cfg.method = Method::Fastsim;
@@ -1613,5 +1616,65 @@ proptest! {
             }
             prop_assert!(set.total_load.is_finite());
         }
+    }
+}
+
+/// Regression: a finite but huge bound coefficient (`StripParabolic(f64::MAX)`, found by
+/// `pipeline_config_garbage`: dy 0, 8 strips, Eps0, no filter, FASTSIM) made the cell bound
+/// overflow to +∞ and the cell output non-finite. Now a typed error, for FASTSIM and FaStrip
+/// and for every huge parameter of the three bounds; ordinary coefficients still solve.
+#[test]
+fn huge_bound_coefficient_is_a_typed_error() {
+    use wrc_host_tests::cases::a8b4;
+    use wrc_kernel::fastrip::{fastrip, FastripSettings};
+    use wrc_kernel::fastsim::{fastsim, FastsimSettings};
+    use wrc_kernel::patch::{Ellipse, HertzPressure, StripPatch, TractionBound};
+    let (patch, ell): (StripPatch<f64, 32, 32>, Ellipse<f64>) = a8b4();
+    let pr = HertzPressure(ell);
+    let cr = Creepage {
+        xi: 1e-3,
+        eta: -5e-4,
+        phi: 2e-4,
+    };
+    let huge = [
+        (0.3, TractionBound::StripParabolic(f64::MAX)),
+        (0.3, TractionBound::StripParabolic(1e306)),
+        (
+            10.0,
+            TractionBound::Parabolic(Ellipse {
+                p0: f64::MAX,
+                ..ell
+            }),
+        ),
+        (f64::MAX, TractionBound::Elliptic),
+    ];
+    let overflow = Err(Error::OutOfRange("traction bound overflows"));
+    for (mu, b) in huge {
+        let s = FastsimSettings::canonical(mu, b);
+        assert_eq!(
+            fastsim(&patch, &pr, &cr, &s, &mut ()).map(|_| ()),
+            overflow,
+            "{b:?}"
+        );
+        let mut f = FastripSettings::new(0.3);
+        f.direction.mu = mu;
+        f.direction.bound = b;
+        assert_eq!(
+            fastrip(&patch, &pr, &cr, &f, &mut ()).map(|_| ()),
+            overflow,
+            "{b:?}"
+        );
+    }
+    // large but representable peaks (up to 0.4·f64::MAX) are linear theory, finite everywhere
+    for b in [
+        TractionBound::StripParabolic(1e6),
+        TractionBound::Parabolic(Ellipse {
+            p0: f64::MAX,
+            ..ell
+        }),
+    ] {
+        let s = FastsimSettings::canonical(0.3, b);
+        let t = fastsim(&patch, &pr, &cr, &s, &mut ()).unwrap();
+        assert!(t.total.fx.is_finite() && t.total.fy.is_finite() && t.total.mz.is_finite());
     }
 }

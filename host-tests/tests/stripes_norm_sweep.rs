@@ -311,6 +311,204 @@ fn stripes_against_norm_sweep_and_manchester() {
     assert!(fails.is_empty(), "{fails:#?}");
 }
 
+/// NORM's load per contact region (runs of grid rows with contact), ascending y, N.
+fn norm_region_loads(p: &PatchCase) -> Vec<f64> {
+    norm_row_regions(&p.norm)
+        .iter()
+        .map(|&(j0, j1)| {
+            (j0..=j1)
+                .map(|j| p.norm.strips[j].force_per_width * p.grid.dy)
+                .sum()
+        })
+        .collect()
+}
+
+/// Known issue-6 misses on the band with the default (per wheel, |Δpmax| > 20 %): STRIPES
+/// bridges the concave valley between tread and flange root (local ε ≈ 0.67 of the floored
+/// curvature there) where NORM has two regions, so the flange root's pressure peak is spread over
+/// one merged region (−30…−43 %), or it gives the flange root up to twice NORM's load (+24…+30 %,
+/// no inter-region elastic coupling in the default, see `StripesConfig::interaction`).
+const KNOWN_BAND_PMAX_MISSES: [&str; 10] = [
+    "1360 R dy+4.65 40.0kN",
+    "1360 R dy+4.55 83.3kN",
+    "1360 R dy+4.70 83.3kN",
+    "1360 R dy+4.75 83.3kN",
+    "1360 R dy+4.80 83.3kN",
+    "1360 R dy+4.85 83.3kN",
+    "1360 R dy+4.65 120.0kN",
+    "1360 R dy+4.70 120.0kN",
+    "1360 R dy+4.75 120.0kN",
+    "1360 R dy+4.80 120.0kN",
+];
+
+/// The tread → flange-root band (issue 6, "finer steps where regions change"): S1002/UIC60,
+/// 1360 mm, right wheel, dy = 4.05…4.95 mm in 0.05 mm steps, 40/83.3/120 kN (57 cases; the left
+/// wheel is its mirror image, see the sweep's mirror check): the kernel's default wheel solve
+/// against NORM on every patch at the same load. Table: `out/stripes_norm_band.md`.
+///
+/// Asserted (the default does **not** meet the issue-6 targets here; measured 2026-12-02: pmax
+/// mean / max 8.9 / 42.7 %, area 6.9 / 17.7 %):
+/// * every wheel solve converges; every case's area within 20 % of NORM's; the pmax misses beyond
+///   20 % are exactly [`KNOWN_BAND_PMAX_MISSES`] (a fix shows up as a failure that asks to shorten
+///   the list); mean |Δpmax| ≤ 9.5 %, mean |Δarea| ≤ 7.5 % (regression guard at today's values);
+/// * the inter-region coupling (`StripesConfig::interaction`, re-solving each heaviest patch on the
+///   kernel's samples at the same load), on the cases where NORM, STRIPES and the coupled STRIPES
+///   all have two regions (10): where STRIPES without it gives the flange root more of the patch
+///   load than NORM (8 cases — the missing far-field lift), the coupling brings the share closer
+///   in every case and the mean |share − NORM's| falls at least 3× (measured 3.94 → 0.74
+///   percentage points); over all 10 the mean falls 4.47 → 2.07 points. (The other two: dy 4.95
+///   40 kN 52.0 → 52.8 %, NORM 53.2 %; dy 4.70 83.3 kN 5.4 → 3.2 %, NORM 17.5 % — there STRIPES'
+///   tread region bridges the valley and takes the flange root's load, which no far-field term
+///   fixes.)
+#[test]
+fn stripes_against_norm_on_the_flange_root_band() {
+    use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
+    let (w, r) = tables().unwrap();
+    let o = NormGridOptions::default();
+    let mut band = vec![];
+    let mut ws = Box::new(DefaultWorkspace::<f64>::new());
+    let mut shares = vec![];
+    for load in SWEEP_LOADS {
+        for k in 1..20 {
+            let c = sweep_case(
+                &w,
+                &r,
+                wrc_kernel::geometry::Side::Right,
+                1360.0,
+                4.0 + 0.05 * k as f64,
+                load,
+            )
+            .unwrap();
+            let sol =
+                solve_sweep_case(&w, &r, &c, &o).unwrap_or_else(|e| panic!("{}: {e}", c.label));
+            assert!(sol.wheel.converged, "{}", c.label);
+            band.push(line(c.label.clone(), &sol));
+            let p = &sol.patches[sol.main()];
+            let mut cfg = PipelineConfig::<f64>::recommended(0.3, SWEEP_SPEED);
+            assert!(!cfg.stripes.interaction);
+            cfg.stripes.interaction = true;
+            let on = solve_patch(
+                &p.stripes_samples,
+                p.load,
+                &p.creepage,
+                &wrc_kernel::Material::steel(),
+                &cfg,
+                &mut ws,
+                &mut (),
+            )
+            .unwrap();
+            assert!(on.converged, "{}", c.label);
+            let nl = norm_region_loads(p);
+            if nl.len() == 2 && p.kernel.n_regions == 2 && on.n_regions == 2 {
+                let total = p.load;
+                let share = |x: f64| x / total;
+                shares.push((
+                    c.label.clone(),
+                    share(nl[1]),
+                    share(p.kernel.regions[1].load),
+                    share(on.regions[1].load),
+                ));
+            }
+        }
+    }
+    let ls: Vec<&Line> = band.iter().collect();
+    let dp: Vec<f64> = ls.iter().map(|l| l.dp()).collect();
+    let da: Vec<f64> = ls.iter().map(|l| l.da()).collect();
+    let mut txt = String::from(
+        "# STRIPES against NORM on the 1360 mm tread → flange-root band\n\n\
+         Generated by `cargo test -p wrc-host-tests --release --test stripes_norm_sweep band`.\n\n\
+         | set | cases | pmax mean / max % | # > 10 % | # > 20 % | area mean / max % | # > 10 % | # > 20 % |\n|---|---|---|---|---|---|---|---|\n",
+    );
+    summary("band 1360 R dy 4.05…4.95", &dp, &da, &mut txt);
+    writeln!(
+        txt,
+        "\n## Flange-root share of the heaviest patch's load (two regions in NORM, STRIPES, coupled STRIPES)\n\n\
+         | case | NORM % | STRIPES % | STRIPES + coupling % |\n|---|---|---|---|"
+    )
+    .unwrap();
+    for (l, n, s0, s1) in &shares {
+        writeln!(
+            txt,
+            "| {l} | {:.1} | {:.1} | {:.1} |",
+            100.0 * n,
+            100.0 * s0,
+            100.0 * s1
+        )
+        .unwrap();
+    }
+    let e_off = shares.iter().map(|s| (s.2 - s.1).abs()).sum::<f64>() / shares.len() as f64;
+    let e_on = shares.iter().map(|s| (s.3 - s.1).abs()).sum::<f64>() / shares.len() as f64;
+    writeln!(
+        txt,
+        "\nMean |share − NORM's|: {:.2} points without, {:.2} with the coupling ({} cases).",
+        100.0 * e_off,
+        100.0 * e_on,
+        shares.len()
+    )
+    .unwrap();
+    table("Band", &band, &mut txt);
+    println!("{txt}");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .parent()
+        .unwrap();
+    std::fs::create_dir_all(root.join("out")).unwrap();
+    std::fs::write(root.join("out/stripes_norm_band.md"), &txt).unwrap();
+
+    let mut fails = vec![];
+    let (pm, _, _, _) = stats(&dp);
+    let (am, _, _, _) = stats(&da);
+    if pm > 0.095 {
+        fails.push(format!("band: mean |Δpmax| {:.2} % > 9.5 %", 100.0 * pm));
+    }
+    if am > 0.075 {
+        fails.push(format!("band: mean |Δarea| {:.2} % > 7.5 %", 100.0 * am));
+    }
+    for l in &ls {
+        if l.da().abs() > 0.20 {
+            fails.push(format!("{}: Δarea {:+.1} %", l.label, 100.0 * l.da()));
+        }
+        let listed = KNOWN_BAND_PMAX_MISSES.contains(&l.label.as_str());
+        if (l.dp().abs() > 0.20) != listed {
+            fails.push(format!(
+                "{}: Δpmax {:+.1} %, listed as a known miss: {listed}",
+                l.label,
+                100.0 * l.dp()
+            ));
+        }
+    }
+    if shares.len() < 10 {
+        fails.push(format!("only {} two-region cases", shares.len()));
+    }
+    let over: Vec<_> = shares.iter().filter(|s| s.2 > s.1).collect();
+    let o_off = over.iter().map(|s| s.2 - s.1).sum::<f64>() / over.len().max(1) as f64;
+    let o_on = over.iter().map(|s| (s.3 - s.1).abs()).sum::<f64>() / over.len().max(1) as f64;
+    println!(
+        "over-loaded flange roots: {} cases, mean share error {:.2} → {:.2} points",
+        over.len(),
+        100.0 * o_off,
+        100.0 * o_on
+    );
+    if over.len() < 5 || o_on * 3.0 > o_off {
+        fails.push(format!(
+            "coupling: {} over-loaded flange roots, mean share error {:.2} → {:.2} points",
+            over.len(),
+            100.0 * o_off,
+            100.0 * o_on
+        ));
+    }
+    for (l, n, s0, s1) in &over {
+        if (s1 - n).abs() >= s0 - n {
+            fails.push(format!(
+                "{l}: coupling does not bring the flange-root share closer to NORM's ({:.1} → {:.1} %, NORM {:.1} %)",
+                100.0 * s0,
+                100.0 * s1,
+                100.0 * n
+            ));
+        }
+    }
+    assert!(fails.is_empty(), "{fails:#?}");
+}
+
 /// Diagnosis of one sweep case: `B2B=1360 DY=4.75 LOAD=83300 SIDE=right cargo test -p
 /// wrc-host-tests --release --test stripes_norm_sweep diag -- --ignored --nocapture`.
 #[test]
@@ -463,6 +661,57 @@ fn variants() {
     let variants = [
         ("rec", rec),
         (
+            "rec, interaction off",
+            StripesConfig {
+                interaction: false,
+                ..rec
+            },
+        ),
+        (
+            "EpsW(1) + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(1.0),
+                ..rec
+            },
+        ),
+        (
+            "EpsW(0.5) + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(0.5),
+                ..rec
+            },
+        ),
+        (
+            "EpsW(1.5) + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(1.5),
+                ..rec
+            },
+        ),
+        (
+            "EpsW(1) b_floor 0 + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(1.0),
+                b_floor: 0.0,
+                ..rec
+            },
+        ),
+        (
+            "EpsW(0.5) b_floor 0 + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsWeighted(0.5),
+                b_floor: 0.0,
+                ..rec
+            },
+        ),
+        (
+            "EpsSm(2) + interaction",
+            StripesConfig {
+                h_mode: HMode::EpsSmoothed(2.0),
+                ..rec
+            },
+        ),
+        (
             "rec b_floor 0 (hard clamp)",
             StripesConfig {
                 b_floor: 0.0,
@@ -589,7 +838,8 @@ fn variants() {
     println!(
         "| variant | set | n | pmax mean / max % | >10 | >20 | area mean / max % | >10 | >20 |"
     );
-    for (name, sc) in variants {
+    let nvar: usize = std::env::var("NVAR").map_or(usize::MAX, |v| v.parse().unwrap());
+    for (name, sc) in variants.into_iter().take(nvar) {
         for (set, cases) in &sets {
             let (mut dp, mut da, mut dd) = (vec![], vec![], vec![]);
             for (sol, mat) in cases {
@@ -701,4 +951,228 @@ fn sliver_region_does_not_fail_the_patch() {
     assert!(loads.contains(&0.0), "{loads:?}");
     assert!((loads.iter().sum::<f64>() / load - 1.0).abs() < 1e-9);
     assert!(res.totals.fx.is_finite() && res.totals.fy.is_finite());
+}
+
+/// Inter-region interaction diagnosis on the 1360 band: per region (NORM: row runs; STRIPES:
+/// kernel regions) load, pmax, area, and NORM with each region alone at its coupled load.
+/// `DYS=4.5,4.75 LOADS=40000 cargo test -p wrc-host-tests --release --test stripes_norm_sweep
+/// interaction_diag -- --ignored --nocapture`
+#[test]
+#[ignore]
+fn interaction_diag() {
+    let env = |k: &str, d: &str| std::env::var(k).unwrap_or(d.into());
+    let dys: Vec<f64> = env("DYS", "4.5")
+        .split(',')
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let loads: Vec<f64> = env("LOADS", "83300")
+        .split(',')
+        .map(|s| s.parse().unwrap())
+        .collect();
+    let (w, r) = tables().unwrap();
+    let o = NormGridOptions::default();
+    let mat = wrc_kernel::Material::<f64>::steel();
+    for &load in &loads {
+        for &dy in &dys {
+            let c =
+                sweep_case(&w, &r, wrc_kernel::geometry::Side::Right, 1360.0, dy, load).unwrap();
+            let sol = solve_sweep_case(&w, &r, &c, &o).unwrap();
+            let l = line(c.label.clone(), &sol);
+            println!(
+                "== {} : Δpmax {:+.1} % Δarea {:+.1} %",
+                c.label,
+                100.0 * l.dp(),
+                100.0 * l.da()
+            );
+            for p in &sol.patches {
+                let g = p.grid;
+                println!(
+                    " patch load {:.0} approach S {:.5} N {:.5} grid {}x{}@{:.3}",
+                    p.load, p.kernel.approach, p.norm.approach, g.mx, g.my, g.dx
+                );
+                for k in 0..p.kernel.n_regions {
+                    let rg = p.kernel.regions[k];
+                    println!(
+                        "  S region y {:.2}..{:.2} load {:.0} pmax {:.0} area {:.1}",
+                        rg.y_lo, rg.y_hi, rg.load, rg.pmax, rg.area
+                    );
+                }
+                if let Ok(hm) = std::env::var("HMODE") {
+                    use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
+                    use wrc_kernel::stripes::{HMode, StripesConfig};
+                    let mut cfg = PipelineConfig::<f64>::recommended(0.3, SWEEP_SPEED);
+                    let l: f64 = env("LEPS", "1").parse().unwrap();
+                    cfg.stripes = StripesConfig {
+                        h_mode: match hm.as_str() {
+                            "w" => HMode::EpsWeighted(l),
+                            "s" => HMode::EpsSmoothed(l),
+                            "0" => HMode::Eps0,
+                            _ => HMode::EpsLocal,
+                        },
+                        b_floor: env("BFLOOR", "0.1").parse().unwrap(),
+                        interaction: env("INTER", "1") == "1",
+                        ..StripesConfig::recommended()
+                    };
+                    let mut ws = Box::new(DefaultWorkspace::<f64>::new());
+                    let k = solve_patch(
+                        &p.stripes_samples,
+                        p.load,
+                        &p.creepage,
+                        &mat,
+                        &cfg,
+                        &mut ws,
+                        &mut (),
+                    )
+                    .unwrap();
+                    println!(
+                        "  variant {hm}: approach {:.5} pmax {:.0} ({:+.1} %) area {:.1} ({:+.1} %) it {} conv {}",
+                        k.approach,
+                        k.pmax,
+                        100.0 * (k.pmax / p.norm.p_max - 1.0),
+                        k.area,
+                        100.0 * (k.area / p.norm.area - 1.0),
+                        k.iterations,
+                        k.converged
+                    );
+                    for rg in &k.regions[..k.n_regions] {
+                        println!(
+                            "  V region y {:.2}..{:.2} load {:.0} pmax {:.0} area {:.1}",
+                            rg.y_lo, rg.y_hi, rg.load, rg.pmax, rg.area
+                        );
+                    }
+                }
+                let regs = norm_row_regions(&p.norm);
+                let mut nreg = vec![];
+                for &(j0, j1) in &regs {
+                    let (mut f, mut pm, mut n) = (0.0, 0.0f64, 0usize);
+                    for j in j0..=j1 {
+                        let st = &p.norm.strips[j];
+                        f += st.force_per_width * g.dy;
+                        pm = pm.max(st.p_max);
+                        for i in 0..g.mx {
+                            if p.norm.contact[g.index(i, j)] {
+                                n += 1;
+                            }
+                        }
+                    }
+                    nreg.push((j0, j1, f));
+                    println!(
+                        "  N region y {:.2}..{:.2} load {:.0} pmax {:.0} area {:.1}",
+                        g.y(j0) - 0.5 * g.dy,
+                        g.y(j1) + 0.5 * g.dy,
+                        f,
+                        pm,
+                        n as f64 * g.dx * g.dy
+                    );
+                }
+                if nreg.len() < 2 {
+                    continue;
+                }
+                // Boussinesq displacement (both bodies) of each NORM region's pressure at the
+                // other region's centroid, and NORM with each region alone at its coupled load.
+                let h0 = g.sample(|x, y| p.gap_at(x, y));
+                for (k, &(j0, j1, f)) in nreg.iter().enumerate() {
+                    let (mut cx, mut cy) = (0.0, 0.0);
+                    for j in j0..=j1 {
+                        for i in 0..g.mx {
+                            let pr = p.norm.pressure[g.index(i, j)];
+                            cx += pr * g.x(i);
+                            cy += pr * g.y(j);
+                        }
+                    }
+                    let tot: f64 = (j0..=j1)
+                        .flat_map(|j| (0..g.mx).map(move |i| (i, j)))
+                        .map(|(i, j)| p.norm.pressure[g.index(i, j)])
+                        .sum();
+                    let (cx, cy) = (cx / tot, cy / tot);
+                    let mut u_other = 0.0;
+                    for (k2, &(a0, a1, _)) in nreg.iter().enumerate() {
+                        if k2 == k {
+                            continue;
+                        }
+                        for j in a0..=a1 {
+                            for i in 0..g.mx {
+                                let pr = p.norm.pressure[g.index(i, j)];
+                                if pr > 0.0 {
+                                    let rr = ((g.x(i) - cx).powi(2) + (g.y(j) - cy).powi(2)).sqrt();
+                                    u_other +=
+                                        pr * g.dx * g.dy / (std::f64::consts::PI * mat.e_star * rr);
+                                }
+                            }
+                        }
+                    }
+                    let mut h = h0.clone();
+                    for j in 0..g.my {
+                        if j < j0 || j > j1 {
+                            for i in 0..g.mx {
+                                h[g.index(i, j)] += 10.0;
+                            }
+                        }
+                    }
+                    let alone = wrc_host_tests::norm::solve(
+                        &g,
+                        &h,
+                        &mat,
+                        wrc_host_tests::norm::Control::Load(f),
+                        &o.solver,
+                    )
+                    .unwrap();
+                    println!(
+                        "  N region {k} centroid ({cx:.2},{cy:.2}) u from others {:.5} mm; alone at {:.0} N: approach {:.5} pmax {:.0} area {:.1}",
+                        u_other, f, alone.approach, alone.p_max, alone.area
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// Coupling probe: STRIPES on one case's patch samples over a load scan (δ, converged, steps).
+/// `DY=4.565 cargo test -p wrc-host-tests --release --test stripes_norm_sweep coupling_probe --
+/// --ignored --nocapture`
+#[test]
+#[ignore]
+fn coupling_probe() {
+    use wrc_kernel::stripes::{Stripes, StripesConfig};
+    let env = |k: &str, d: &str| std::env::var(k).unwrap_or(d.into());
+    let (w, r) = tables().unwrap();
+    let c = sweep_case(
+        &w,
+        &r,
+        wrc_kernel::geometry::Side::Right,
+        1360.0,
+        env("DY", "4.565").parse().unwrap(),
+        env("LOAD", "83300").parse().unwrap(),
+    )
+    .unwrap();
+    let g = c.place(&w, &r).unwrap();
+    let (wheel, kps) =
+        solve_kernel_case(&g, c.load, &wrc_kernel::Material::steel(), &c.config()).unwrap();
+    println!(
+        "wheel converged {} iterations {}",
+        wheel.converged, wheel.iterations
+    );
+    let mat = wrc_kernel::Material::<f64>::steel();
+    let cfg = StripesConfig::<f64>::recommended();
+    for p in &kps {
+        println!("patch load {:.1} approach {:.6}", p.load, p.frame.approach);
+        let mut st = Box::new(Stripes::<f64, 256, 8, 4>::new());
+        for k in 0..=40 {
+            let f = p.load * (1.0 + env("SC", "0.005").parse::<f64>().unwrap() * (k as f64 - 20.0));
+            let s = st.solve(&p.stripes_samples, f, &mat, &cfg).unwrap();
+            println!(
+                "  N {:9.2} δ {:.8} conv {} it {} basins {} regions {} theta {:?}",
+                f,
+                s.delta,
+                s.converged,
+                s.iterations,
+                s.basins,
+                s.n_regions,
+                (0..s.basins)
+                    .filter_map(|k| st.basin_info(k))
+                    .map(|b| b.2)
+                    .collect::<Vec<_>>()
+            );
+        }
+    }
 }

@@ -343,6 +343,7 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
     cr.check()?;
     let dset = &set.direction;
     dset.check()?;
+    dset.bound.check_on(dset.mu, patch)?;
     check_finite(set.edge_margin, "edge_margin")?;
     if set.edge_margin < T::ZERO {
         return Err(Error::NonPositive("edge_margin"));

@@ -408,7 +408,8 @@ pub(crate) fn march_strip<T: Real, const S: usize, const C: usize, P: PressureFi
 /// `sink` (use `&mut ()` for forces only). Returns totals and per-strip totals (forces on the wheel).
 ///
 /// Errors: invalid patch (see [`StripPatch::validate`]), non-finite creepages, μ ≤ 0 or non-finite,
-/// invalid bound or flexibility-mode parameters.
+/// invalid bound or flexibility-mode parameters, a bound that overflows on the patch
+/// ([`TractionBound::check_on`]).
 pub fn fastsim<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: CellSink<T>>(
     patch: &StripPatch<T, S, C>,
     pressure: &P,
@@ -419,6 +420,7 @@ pub fn fastsim<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
     patch.validate()?;
     cr.check()?;
     set.check()?;
+    set.bound.check_on(set.mu, patch)?;
     let mut res = Tangential::<T, S>::default();
     for j in 0..S {
         let s = patch.strips[j];

@@ -575,6 +575,35 @@ impl<T: Real> TractionBound<T> {
         }
         Ok(())
     }
+
+    /// Checks that the bound's peak on `patch` with friction `mu` is a finite number of MPa:
+    /// c μ max_j p̂_j (`StripParabolic`), (4/3) μ p0 (`Parabolic`), μ max_j p̂_j (`Elliptic`, the
+    /// strips' peak pressure). A finite but huge coefficient (e.g. `StripParabolic(f64::MAX)`)
+    /// would otherwise overflow to an infinite bound in the cells and in their reported `bound`.
+    ///
+    /// Errors: `OutOfRange("traction bound overflows")`.
+    pub fn check_on<const S: usize, const C: usize>(
+        &self,
+        mu: T,
+        patch: &StripPatch<T, S, C>,
+    ) -> Result<(), Error> {
+        let mut p_max = T::ZERO;
+        for s in patch.strips.iter() {
+            if s.a > T::ZERO {
+                p_max = math::max(p_max, s.p_hat);
+            }
+        }
+        let peak = match *self {
+            TractionBound::Parabolic(e) => mu * c::<T>(4.0 / 3.0) * e.p0,
+            TractionBound::Elliptic => mu * p_max,
+            TractionBound::StripParabolic(cf) => cf * mu * p_max,
+        };
+        if math::is_finite(peak) {
+            Ok(())
+        } else {
+            Err(Error::OutOfRange("traction bound overflows"))
+        }
+    }
 }
 
 /// Results of one contact cell, handed to a [`CellSink`].

@@ -188,14 +188,22 @@ impl<T: Real, const N: usize> ProfileTable<T, N> {
                 // marching forward: the old end node is the new start node (same values)
                 cache.c0 = cache.c1;
                 cache.s0 = cache.s1;
+                cache.c1 = math::cos(self.angle[j]);
+                cache.s1 = math::sin(self.angle[j]);
+            } else if cache.valid && cache.i == j {
+                // marching backward: the old start node is the new end node
+                cache.c1 = cache.c0;
+                cache.s1 = cache.s0;
+                cache.c0 = math::cos(self.angle[i]);
+                cache.s0 = math::sin(self.angle[i]);
             } else {
                 cache.c0 = math::cos(self.angle[i]);
                 cache.s0 = math::sin(self.angle[i]);
+                cache.c1 = math::cos(self.angle[j]);
+                cache.s1 = math::sin(self.angle[j]);
             }
             cache.i = i;
             cache.valid = true;
-            cache.c1 = math::cos(self.angle[j]);
-            cache.s1 = math::sin(self.angle[j]);
         }
         (i, u)
     }

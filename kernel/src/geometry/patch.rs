@@ -811,15 +811,19 @@ pub fn sample_patch<T: Real, const N: usize, const M: usize, const S: usize>(
         Correspondence::Projection => {
             let (mut tr, mut tw) = (tr_ref, tw_ref);
             let mut best = T::MAX;
-            let (mut rc2, mut wc2) = (SegmentCache::new(), SegmentCache::new());
             for i in 0..n {
                 let s = out.s(i);
                 tr = solve_s_nodes(&rpos, &fr, rail.table.len, tr, s, &rnodes)
                     .ok_or(Error::NoContact)?;
                 tw = solve_s_nodes(&wpos, &fr, wheel.table.len, tw, s, &wnodes)
                     .ok_or(Error::NoContact)?;
-                let rp = rail.at_local_cached(tr, &mut rc2);
-                let wp = wheel.at_local_cached(tw, &mut wc2);
+                // the points with the root searches' caches: they ended in these segments
+                let mut c = rcache.get();
+                let rp = rail.at_local_cached(tr, &mut c);
+                rcache.set(c);
+                let mut c = wcache.get();
+                let wp = wheel.at_local_cached(tw, &mut c);
+                wcache.set(c);
                 out.f_n[i] = fr.n(wp.y, wp.z) - fr.n(rp.y, rp.z);
                 out.angle[i] = wp.angle;
                 out.radius[i] = wp.radius;
