@@ -120,7 +120,7 @@
 //! | series | instructions per call | geometry passes | STRIPES solves of the split | coupling rounds |
 //! |---|---|---|---|---|
 //! | ramp: dy −3…6 mm in 0.01–0.05 mm steps, yaw 1.2·dy mrad (301 calls) | 11.39 M / 33.0 M → 5.41 M / 16.6 M | 8 / 15 → 3 / 8 | 20 / 66 → 7 / 25 | 3 / 3 → 1 / 3 |
-//! | hunting: dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (first 250 calls) | 10.88 M / 14.7 M → 4.56 M / 12.4 M | 7 / 9 → 3 / 7 | 17 / 25 → 6 / 17 | 3 / 3 → 1 / 3 |
+//! | hunting: dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (1000 calls) | 9.30 M / 14.7 M → 4.44 M / 12.4 M | 7 / 9 → 3 / 7 | 17 / 25 → 6 / 17 | 3 / 3 → 1 / 3 |
 //!
 //! Warm − cold differences (median / max over the steps, per patch): ramp |ΔF|/(μF_z) 1.2e-7 /
 //! 1.3e-6, |ΔN|/F_z 2.0e-7 / 1.3e-6, |Δpmax|/pmax 6.7e-8 / 6.8e-7, |Δarea|/area 1.5e-7 / 5.8e-6,
