@@ -19,7 +19,9 @@ use wrc_kernel::patch::{
     TractionBound,
 };
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
+use wrc_kernel::wheel::{
+    solve_wheel, solve_wheel_warm, DefaultWheelWorkspace, WheelConfig, WheelResult, WheelState,
+};
 use wrc_kernel::{hertz, kalker, math, Error, Material, Real};
 
 /// Node capacity of the embedded profile tables (S1002: 1494 nodes, UIC60: 1324, at 0.1 mm).
@@ -167,6 +169,7 @@ case_table!(
     fastrip_modified_m5,
     wheel_tread,
     wheel_flange,
+    wheel_step,
     rejects,
 );
 
@@ -640,6 +643,12 @@ fn wheel_case<T: WheelProfiles, M: Meter>(
             &mut (),
         )
     })?;
+    push_wheel(o, &res);
+    Ok(())
+}
+
+/// The results of a wheel solve compared as [`wheel_case`] documents.
+fn push_wheel<T: Real>(o: &mut Outs<T>, res: &WheelResult<T, 4, 4>) {
     let scale = |x: T| 10.0 * math::abs(x).to_f64();
     let muf = 10.0 * 0.3 * 83_300.0;
     o.count(res.n);
@@ -661,12 +670,65 @@ fn wheel_case<T: WheelProfiles, M: Meter>(
         }
         o.real(wear, 10.0 * scale(wear));
     }
-    Ok(())
 }
 
 /// [`wheel_case`] on the tread: lateral shift 0, yaw 0.
 pub fn wheel_tread<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
     wheel_case(m, o, 0.0, "wheel place dy=0", "wheel solve_wheel dy=0")
+}
+
+/// One time step of a vehicle-dynamics loop (issue 6, warm start): the [`wheel_case`] set-up
+/// placed and solved at lateral shift 0 with `wheel::solve_wheel_warm` from a cold
+/// `WheelState` (the warm-up call of the previous step, not metered), then the pair is moved to
+/// the next pose, lateral shift 0.05 mm, yaw 1.2e-3 · 0.05 rad, with `WheelRail::reposition`
+/// ("wheel reposition") and solved warm from that state ("wheel step (warm)"). Results compared
+/// as in [`wheel_case`], plus the geometry passes of the warm call (per precision, exact).
+pub fn wheel_step<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
+    let (wheel, rail) = T::tables();
+    let setup = TrackSetup::<T>::standard();
+    let pose_of = |dy: f64| {
+        let p = WheelsetPose::from_contact(dy, 1.2e-3 * dy, 0.0);
+        WheelsetPose {
+            dy: T::from_f64(p.dy),
+            yaw: T::from_f64(p.yaw),
+            roll: T::ZERO,
+        }
+    };
+    let mut geom = Placed::<T>::unplaced(rail, wheel, &setup);
+    geom.place_in(
+        rail,
+        wheel,
+        &setup,
+        &pose_of(0.0),
+        Side::Right,
+        T::from_f64(0.05),
+    )?;
+    let v = T::from_f64(100.0 / 3.6 * 1000.0);
+    let cfg = WheelConfig::recommended(T::from_f64(0.3), v, T::from_f64(460.0));
+    let mat = Material::<T>::steel();
+    let fz = T::from_f64(83_300.0);
+    let mut ws = WheelWs::<T>::new();
+    let mut st = WheelState::<T, 4>::new();
+    let first = solve_wheel_warm(&geom, fz, &mat, &cfg, &mut ws, &mut st, &mut ())?;
+    o.flag(first.converged && st.is_warm());
+    let pose = pose_of(0.05);
+    m.call("wheel reposition", || {
+        black_box(&mut geom).reposition(black_box(&pose), Side::Right)
+    })?;
+    let res = m.call("wheel step (warm)", || {
+        solve_wheel_warm(
+            black_box(&geom),
+            black_box(fz),
+            &mat,
+            &cfg,
+            &mut ws,
+            &mut st,
+            &mut (),
+        )
+    })?;
+    o.per_precision(res.geometry_calls);
+    push_wheel(o, &res);
+    Ok(())
 }
 
 /// [`wheel_case`] at flange contact: lateral shift 6 mm towards the wheel, yaw 7.2 mrad.
