@@ -875,15 +875,16 @@ fn solve<
     let mut dv = math::c::<T>(0.05);
     // warm start: δ_v scaled by the load change, the patches there matched to the state's slots
     let mut warm = false;
-    if let Some((dv_w, p)) = state.as_deref().and_then(|st| st.start(target_value)) {
+    let warm_start = state
+        .as_deref()
+        .and_then(|st| st.start(target_value).map(|s| (st, s)));
+    if let Some((st, (dv_w, p))) = warm_start {
         dv = dv_w;
         ws.exponent = p;
         contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
         ws.patches_dv = Some(dv);
         ws.geometry_calls += 1;
-        if let Some(st) = state.as_deref() {
-            inherit(st, ws);
-        }
+        inherit(st, ws);
         warm = true;
         ws.reuse = true;
         if !main_only {
