@@ -19,6 +19,12 @@
 //!   per step (median / max over the steps; per patch, patches matched by reference point):
 //!   |ΔF|/(μ F_z) with F = (F_x, F_y) of the patch, |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area,
 //!   |Δδ_v|/δ_v.
+//! * `wheel_series <ramp|hunting|both> [steps] [preset]`: the same with another configuration,
+//!   `preset` = `default`, `realtime` (`WheelConfig::realtime`) or `s<strips>x<samples>[t<tol>]`
+//!   (e.g. `s16x64`, `s32x128t1e-4`);
+//! * `wheel_series compare <ramp|hunting> <preset>`: the preset run warm (one `WheelState`, as a
+//!   real-time loop runs it) against the default run cold, per step and patch: |ΔF|/(μF_z),
+//!   |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area (median / max) and the preset's geometry passes;
 //! * instruction counts per call: `valgrind --tool=callgrind --callgrind-out-file=/tmp/cg/out
 //!   --dump-before='*cold_call*' --dump-before='*warm_call*' --dump-before='*mark*'
 //!   target/release/examples/wheel_series ramp` then
@@ -193,7 +199,32 @@ fn diff(c: &Res, w: &Res, fz: f64) -> Diff {
     d
 }
 
-fn run(name: &str, steps: &[Step]) {
+/// The solver configuration of a run: `default` (`WheelConfig::recommended`), `realtime`
+/// (`WheelConfig::realtime`), or `s<strips>x<samples>` (recommended with that many strips per
+/// region and geometry samples per patch, e.g. `s16x64`).
+fn config(preset: &str) -> WheelConfig<f64> {
+    let v = 100.0 / 3.6 * 1000.0;
+    match preset {
+        "default" => WheelConfig::recommended(MU, v, 460.0),
+        "realtime" => WheelConfig::realtime(MU, v, 460.0),
+        p => {
+            let (a, b) = p
+                .strip_prefix('s')
+                .and_then(|r| r.split_once('x'))
+                .expect("preset: default, realtime or s<strips>x<samples>[t<tol>]");
+            let (b, t) = b.split_once('t').unwrap_or((b, ""));
+            let mut c = WheelConfig::recommended(MU, v, 460.0);
+            c.pipeline.strips_per_region = a.parse().expect("strips");
+            c.patches.samples = b.parse().expect("samples");
+            if !t.is_empty() {
+                c.tol = t.parse().expect("tol");
+            }
+            c
+        }
+    }
+}
+
+fn run(name: &str, steps: &[Step], cfg: &WheelConfig<f64>) {
     let pair = wrc_bench::tables::<f64>();
     let (w, r) = (&*pair.0, &*pair.1);
     let setup = TrackSetup {
@@ -202,8 +233,7 @@ fn run(name: &str, steps: &[Step]) {
     };
     let roll = Roll::new(r, w, &setup);
     let mat = Material::<f64>::steel();
-    let v = 100.0 / 3.6 * 1000.0;
-    let cfg = WheelConfig::recommended(MU, v, 460.0);
+    let cfg = *cfg;
     let mut ws_c = Box::new(DefaultWheelWorkspace::<f64>::new());
     let mut ws_w = Box::new(DefaultWheelWorkspace::<f64>::new());
     let mut st = WheelState::<f64, 4>::new();
@@ -291,6 +321,54 @@ fn run(name: &str, steps: &[Step]) {
     );
 }
 
+/// Warm solves of `preset` (one `WheelState` along the series, as a real-time loop runs it)
+/// against cold solves of the default configuration: per step and patch (matched by reference
+/// point) |ΔF|/(μF_z), |ΔN|/F_z, |Δpmax|/pmax, |Δarea|/area; median / max; and the preset's
+/// geometry passes per call.
+fn compare(name: &str, steps: &[Step], preset: &str) {
+    let pair = wrc_bench::tables::<f64>();
+    let (w, r) = (&*pair.0, &*pair.1);
+    let setup = TrackSetup {
+        back_to_back: 1360.0,
+        ..TrackSetup::<f64>::standard()
+    };
+    let roll = Roll::new(r, w, &setup);
+    let mat = Material::<f64>::steel();
+    let (c0, c1) = (config("default"), config(preset));
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let mut st = WheelState::<f64, 4>::new();
+    let mut diffs = vec![];
+    let mut passes: Vec<f64> = vec![];
+    for s in steps {
+        let pose = WheelsetPose::from_contact(s.y, s.yaw, roll.at(s.y));
+        let g = WheelRail::<f64, 2048, 2048>::place(r, w, &setup, &pose, Side::Right, GRID)
+            .expect("placement");
+        let a = cold_call(&g, s.fz, &mat, &c0, &mut ws);
+        let b = warm_call(&g, s.fz, &mat, &c1, &mut ws, &mut st);
+        passes.push(b.geometry_calls as f64);
+        diffs.push(diff(&a, &b, s.fz));
+    }
+    println!(
+        "== {name}: {preset} warm against default cold, {} steps; geometry passes median {} max {}",
+        steps.len(),
+        median(&passes),
+        max(&passes)
+    );
+    for (label, f) in [
+        ("|ΔF|/(μFz)", &(|d: &Diff| d.force) as &dyn Fn(&Diff) -> f64),
+        ("|ΔN|/Fz", &|d: &Diff| d.load),
+        ("|Δpmax|/pmax", &|d: &Diff| d.pmax),
+        ("|Δarea|/area", &|d: &Diff| d.area),
+    ] {
+        let v: Vec<f64> = diffs.iter().map(f).collect();
+        println!("  {label:14} median {:.2e} max {:.2e}", median(&v), max(&v));
+    }
+    println!(
+        "  steps with a different patch count: {}",
+        diffs.iter().filter(|d| !d.same_patches).count()
+    );
+}
+
 /// Reads callgrind dump files `<base>.1`, `<base>.2`, … and prints median / max instructions of
 /// the cold solves (dumps before `warm_call`) and the warm ones (dumps before `mark`).
 fn parse_callgrind(base: &str) {
@@ -334,19 +412,38 @@ fn parse_callgrind(base: &str) {
 }
 
 fn main() {
-    let mut args = std::env::args().skip(1);
-    let what = args.next().unwrap_or_else(|| "both".into());
-    match what.as_str() {
-        "cg" => parse_callgrind(&args.next().expect("callgrind output base name")),
-        "ramp" => run("ramp", &ramp()),
-        "hunting" => {
-            // optional step count (a shorter series for callgrind)
-            let n: usize = args.next().and_then(|s| s.parse().ok()).unwrap_or(1000);
-            run("hunting", &hunting()[..n.min(1000)])
+    // wheel_series [ramp|hunting|both] [steps] [preset]  |  wheel_series cg <base>
+    //   |  wheel_series compare <ramp|hunting> <preset>
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let what = args.first().map(String::as_str).unwrap_or("both");
+    let hunt = |n: usize| hunting()[..n.min(1000)].to_vec();
+    match what {
+        "cg" => parse_callgrind(args.get(1).expect("callgrind output base name")),
+        "compare" => {
+            let preset = args.get(2).map(String::as_str).unwrap_or("realtime");
+            match args.get(1).map(String::as_str) {
+                Some("ramp") => compare("ramp", &ramp(), preset),
+                _ => compare("hunting", &hunt(1000), preset),
+            }
         }
         _ => {
-            run("ramp", &ramp());
-            run("hunting", &hunting());
+            // optional step count (a shorter hunting series for callgrind), then a preset
+            let n: usize = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1000);
+            let preset = args
+                .iter()
+                .skip(1)
+                .find(|a| a.parse::<usize>().is_err())
+                .map(String::as_str)
+                .unwrap_or("default");
+            let cfg = config(preset);
+            match what {
+                "ramp" => run("ramp", &ramp(), &cfg),
+                "hunting" => run("hunting", &hunt(n), &cfg),
+                _ => {
+                    run("ramp", &ramp(), &cfg);
+                    run("hunting", &hunt(n), &cfg);
+                }
+            }
         }
     }
 }

@@ -84,8 +84,13 @@
 //! 1.5, no load guesses, coupling ratios r_k = 0); [`solve_wheel_warm`] starts from a
 //! [`WheelState`] that the previous call of the same wheel left behind:
 //! * δ_v starts at the previous δ_v scaled by the load change along the previous local exponent
-//!   p of F(δ_v): δ_v = δ_v,prev (F_z / F_z,prev)^{1/p}; the first secant step of the load loop
-//!   uses p;
+//!   p of F(δ_v), δ_v,load = δ_v,prev (F_z / F_z,prev)^{1/p}, times the pose's share of the
+//!   change extrapolated from the previous call: that call's drift d = ln(δ_v / δ_v,load) per
+//!   mm of its lateral-shift increment Δy (when |Δy| > [`DRIFT_DY_MM`]; otherwise d per step),
+//!   δ_v = δ_v,load · exp(d/Δy_prev · Δy), the exponent clamped to ±[`MAX_DRIFT`]. A smooth
+//!   motion changes δ_v mostly through the pose (on the hunting series below the load-only
+//!   start missed F_z by up to 2 %); the drift term leaves the second difference. The first
+//!   secant step of the load loop uses p;
 //! * the patches found at that δ_v are matched to the previous call's patch slots by the lateral
 //!   position of their reference point (`y_ref_rail`, nearest first, each previous slot used
 //!   once, at most [`MATCH_MM`] apart; the geometry may reorder, split, merge, add or drop
@@ -102,7 +107,13 @@
 //!   starts from r = 0 and always needs round 1 to see a change;
 //! * within a warm call a patch slot asked again for the approach of its last load, bit for bit
 //!   (the same patch at the same δ_v: the first pass of every split), returns that load without
-//!   a STRIPES solve (a cold call re-solves it, as it always did).
+//!   a STRIPES solve (a cold call re-solves it, as it always did);
+//! * into a sink that takes no cells ([`WheelSink::CELLS`] false, e.g. `()`), a warm call runs
+//!   its coupling rounds with the full per-patch pipeline (wear included) instead of the
+//!   forces-only one and keeps the results; when the final load split leaves the patches and
+//!   every load unchanged, bit for bit, the kept results are the final ones and the patches are
+//!   not solved again (the same bits: the same computation on the same inputs). A sink that
+//!   takes the cells always gets them from one final solve per patch.
 //!
 //! Every loop keeps its bound and its tolerance, so a warm result satisfies the same
 //! conditions as a cold one and `converged` means the same. The two are different points within
@@ -114,21 +125,30 @@
 //!
 //! Measured (host, f64, S1002/UIC60 1360 mm right wheel, equilibrium roll, 83.3 kN, μ 0.3,
 //! 100 km/h, placement grid 0.05 mm; `cargo run --release -p wrc-bench --example wheel_series`,
-//! instructions by callgrind per call as that example's docs say; 2026-12-02). Counts are
-//! median / max per call, cold → warm:
+//! instructions by callgrind per call as that example's docs say; 2026-12-02, all columns from
+//! the same build settings). Median / max per call; "warm before" is the warm start without the
+//! drift term and without kept round results (commit 4d9a4f2), "realtime" the warm call with
+//! [`WheelConfig::realtime`]:
 //!
-//! | series | instructions per call | geometry passes | STRIPES solves of the split | coupling rounds |
+//! | series | cold | warm before | **warm** | realtime (warm) |
 //! |---|---|---|---|---|
-//! | ramp: dy −3…6 mm in 0.01–0.05 mm steps, yaw 1.2·dy mrad (301 calls) | 11.39 M / 33.0 M → 5.41 M / 16.6 M | 8 / 15 → 3 / 8 | 20 / 66 → 7 / 25 | 3 / 3 → 1 / 3 |
-//! | hunting: dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (1000 calls) | 9.30 M / 14.7 M → 4.44 M / 12.4 M | 7 / 9 → 3 / 7 | 17 / 25 → 6 / 17 | 3 / 3 → 1 / 3 |
+//! | ramp: dy −3…6 mm in 0.01–0.05 mm steps, yaw 1.2·dy mrad (301 calls): instructions | 10.73 M / 31.75 M | 5.12 M / 16.20 M | **4.07 M / 15.99 M** | 2.82 M / 9.82 M |
+//! | geometry passes · STRIPES solves of the split · coupling rounds | 8/15 · 20/66 · 3/3 | 3/8 · 7/25 · 1/3 | 3/8 · 6/25 · 1/3 | 2/5 · 4/15 · 1/3 |
+//! | hunting: dy = 4 sin(2π t/1 s) at 1 kHz, F_z ±10 % (1000 calls): instructions | 8.79 M / 14.19 M | 4.20 M / 11.69 M | **2.96 M / 11.69 M** | 2.39 M / 7.24 M |
+//! | geometry passes · STRIPES solves of the split · coupling rounds | 7/9 · 17/25 · 3/3 | 3/7 · 6/17 · 1/3 | 2/7 · 4/17 · 1/3 | 2/4 · 3/10 · 1/3 |
 //!
-//! Warm − cold differences (median / max over the steps, per patch): ramp |ΔF|/(μF_z) 1.2e-7 /
-//! 1.3e-6, |ΔN|/F_z 2.0e-7 / 1.3e-6, |Δpmax|/pmax 6.7e-8 / 6.8e-7, |Δarea|/area 1.5e-7 / 5.8e-6,
-//! |Δδ_v|/δ_v 1.4e-7 / 1.3e-6; hunting (1000 calls) 9.2e-8 / 8.8e-7, 2.3e-7 / 1.6e-6, 7.9e-8 /
-//! 5.8e-7, 1.7e-7 / 1.1e-6, 1.5e-7 / 1.1e-6. Every call converged, warm and cold, with the same
+//! (Mean instructions per call, ramp / hunting: cold 11.36 / 8.96 M, warm before 5.74 / 4.37 M,
+//! warm 4.53 / 3.38 M, realtime 3.04 / 2.29 M.) The worst calls are the steps where a contact region appears or splits
+//! (a new, cold patch slot: up to 3 coupling rounds and 25 STRIPES solves); they set the
+//! worst case to 3.9 × (ramp) and 4.0 × (hunting) the warm median.
+//!
+//! Warm − cold differences (median / max over the steps, per patch): ramp |ΔF|/(μF_z) 1.1e-7 /
+//! 9.0e-7, |ΔN|/F_z 1.7e-7 / 9.6e-7, |Δpmax|/pmax 5.5e-8 / 4.1e-7, |Δarea|/area 1.2e-7 / 4.5e-6,
+//! |Δδ_v|/δ_v 1.1e-7 / 7.2e-7; hunting (1000 calls) 5.3e-8 / 7.0e-7, 1.5e-7 / 1.3e-6, 4.9e-8 /
+//! 4.6e-7, 1.1e-7 / 8.9e-7, 9.8e-8 / 8.3e-7. Every call converged, warm and cold, with the same
 //! patches. These are the differences of two points that each meet the tolerances (1e-6 on the
 //! load balance and the approaches, 1e-5 on the coupling ratios); `tests/wheel_warm.rs` derives
-//! the bound |ΔF|/(μF_z) ≤ 1.5e-4 from them and asserts it. The warm maxima are the steps
+//! the bound |ΔF|/(μF_z) ≤ 2.1e-4 from them and asserts it. The warm maxima are the steps
 //! where a region appears or splits (a new, cold patch slot).
 //!
 //! Bounds: at most [`MAX_OUTER`] geometry passes and [`MAX_INNER`] STRIPES solves per patch and
@@ -160,6 +180,35 @@ pub const MAX_COUPLING: u32 = 8;
 /// mm on the tread). A wrong match only costs iterations: every loop still converges to its
 /// tolerance from the inherited guess.
 pub const MATCH_MM: f64 = 3.0;
+/// Largest drift |ln(δ_v / δ_v,load)| that [`solve_wheel_warm`] carries into the next call's
+/// start (module docs, "Warm start"): 0.25, a 28 % change of δ_v from the pose alone in one
+/// step, far beyond what a time step of a smooth motion gives (≤ 2 % on the hunting series).
+pub const MAX_DRIFT: f64 = 0.25;
+/// Smallest lateral-shift increment (mm) between two warm calls over which [`solve_wheel_warm`]
+/// divides the drift of δ_v to carry it per mm of shift (module docs, "Warm start"); below it
+/// the drift is carried per step.
+pub const DRIFT_DY_MM: f64 = 1e-3;
+/// Strips per contact region of [`WheelConfig::realtime`] (the default is 32).
+///
+/// Measured cost in accuracy (2026-12-02):
+/// * FaStrip alone on the Hertzian matrix against TANG (3220 cases,
+///   `bench/examples/realtime_grid.rs`), |ΔF|/(μF_n) median / P95 / max: 16 strips × 32 cells
+///   0.38 / 4.47 / 13.64 % against 0.43 / 4.46 / 13.75 % with 32 × 32 (the cell count, not the
+///   strip count, limits it);
+/// * the whole preset (16 strips, tolerance [`REALTIME_TOL`]) run warm along the series of
+///   `bench/examples/wheel_series.rs` (module docs) against the default run cold
+///   (`wheel_series compare <series> realtime`), per patch, median / max over the steps: ramp
+///   |ΔF|/(μF_z) 7.3e-4 / 5.6e-3, |ΔN|/F_z 2.0e-5 / 2.4e-4, |Δpmax|/pmax 2.5e-3 / 0.107,
+///   |Δarea|/area 1.9e-3 / 3.8e-2; hunting 1.3e-3 / 5.8e-3, 3.0e-5 / 1.5e-4, 1.7e-3 / 2.9e-2,
+///   2.0e-3 / 3.7e-3; the same patches in every step. The force differences are those of the
+///   strip count (with 32 strips and tolerance 1e-4 they are ≤ 1.5e-4); the peak pressure of a
+///   narrow flange region is the most sensitive figure (the 10.7 % step of the ramp).
+///
+/// Saving: module docs, "Warm start" (instructions per call).
+pub const REALTIME_STRIPS_PER_REGION: usize = 16;
+/// Load/approach tolerance of [`WheelConfig::realtime`] (relative; the recommended f64 value is
+/// 1e-6). See [`REALTIME_STRIPS_PER_REGION`].
+pub const REALTIME_TOL: f64 = 1e-4;
 
 /// Options of [`solve_wheel`].
 #[derive(Clone, Copy, Debug)]
@@ -197,6 +246,18 @@ impl<T: Real> WheelConfig<T> {
                 math::c(1e-3)
             },
         }
+    }
+
+    /// The real-time preset: [`Self::recommended`] with [`REALTIME_STRIPS_PER_REGION`] (16)
+    /// strips per contact region instead of [`crate::stripes::DEFAULT_STRIPS_PER_REGION`] (32)
+    /// and the load/approach tolerance [`REALTIME_TOL`] (1e-4) where the recommended one is
+    /// tighter (f64: 1e-6; f32 keeps its 1e-3); cells per strip, samples per patch and every
+    /// model choice unchanged. Measured cost in accuracy and saving: [`REALTIME_STRIPS_PER_REGION`].
+    pub fn realtime(mu: T, speed: T, r0: T) -> Self {
+        let mut c = Self::recommended(mu, speed, r0);
+        c.pipeline.strips_per_region = REALTIME_STRIPS_PER_REGION;
+        c.tol = math::max(c.tol, math::c(REALTIME_TOL));
+        c
     }
 }
 
@@ -240,11 +301,18 @@ pub struct WheelResult<T, const K: usize, const NR: usize> {
 
 /// Receives the cells of every patch; `begin_patch(k)` announces patch k.
 pub trait WheelSink<T>: CellSink<T> {
+    /// Whether the sink uses the cells (default `true`). A sink that ignores them (`()`) lets a
+    /// warm call ([`solve_wheel_warm`]) keep the full per-patch results of its last coupling
+    /// round and skip re-solving the patches at the end when the final load split left every
+    /// load unchanged (module docs, "Warm start"); the result is the same, bit for bit.
+    const CELLS: bool = true;
     /// Cells that follow belong to patch `k`.
     fn begin_patch(&mut self, _k: usize) {}
 }
 
-impl<T> WheelSink<T> for () {}
+impl<T> WheelSink<T> for () {
+    const CELLS: bool = false;
+}
 
 /// Caller-owned storage of [`solve_wheel`] (const-constructible: can live in a `static`).
 /// `K` patches of `NP` geometry samples; the pipeline workspace parameters as
@@ -277,6 +345,9 @@ pub struct WheelWorkspace<
     patches_dv: Option<T>,
     /// Warm call: a patch slot asked again for the approach of its last load reuses it.
     reuse: bool,
+    /// Per patch: the full pipeline result of the last coupling round and the load it was
+    /// solved at (warm calls into a sink without cells only; valid within one call).
+    full: [Option<(T, PatchResult<T, NR>)>; K],
 }
 
 /// The default wheel workspace: 4 patches of 128 samples, the default pipeline workspace.
@@ -307,6 +378,7 @@ impl<
             exponent: math::c(1.5),
             patches_dv: None,
             reuse: false,
+            full: [None; K],
         }
     }
 }
@@ -418,7 +490,8 @@ impl<T: Real> SlotState<T> {
 }
 
 /// The solution of one wheel carried from one call of [`solve_wheel_warm`] to the next (see the
-/// module docs, "Warm start"): δ_v, the load-loop exponent, the load target, and per patch slot
+/// module docs, "Warm start"): δ_v, the load-loop exponent, the load target, the drift of δ_v
+/// with the lateral shift it came with, and per patch slot
 /// (up to `K`) the reference point, load, inverse-STRIPES state and coupling ratio.
 ///
 /// Small (a few dozen numbers) and plain data: keep one per wheel, next to the wheel's other
@@ -434,6 +507,14 @@ pub struct WheelState<T, const K: usize> {
     dv: T,
     /// Local exponent d ln F / d ln δ_v of the last secant step of the load loop.
     exponent: T,
+    /// ln(δ_v / δ_v,load) of the last call: how far its δ_v moved from the start predicted by
+    /// the load change alone (the pose's share of the change), 0 after a cold call.
+    drift: T,
+    /// Lateral shift of the wheelset (pose `dy`, mm) of the last call.
+    pose_dy: T,
+    /// d ln δ_v / d(dy) from the last call's drift and shift increment (1/mm), if that
+    /// increment was large enough to divide by.
+    drift_rate: Option<T>,
     /// Patch slots (`slots[..n]`).
     slots: [SlotState<T>; K],
     n: usize,
@@ -447,6 +528,9 @@ impl<T: Real, const K: usize> WheelState<T, K> {
             target: T::ZERO,
             dv: T::ZERO,
             exponent: T::ZERO,
+            drift: T::ZERO,
+            pose_dy: T::ZERO,
+            drift_rate: None,
             slots: [SlotState::cold(); K],
             n: 0,
         }
@@ -488,9 +572,11 @@ impl<T: Real, const K: usize> WheelState<T, K> {
         }
     }
 
-    /// δ_v to start from for the target `target`, and the load-loop exponent; `None` if cold or
-    /// not usable.
-    fn start(&self, target: T) -> Option<(T, T)> {
+    /// δ_v to start from for the target `target`: (start, δ_v,load, load-loop exponent), where
+    /// δ_v,load is the previous δ_v scaled by the load change along the exponent and the start
+    /// adds the previous call's drift (the pose's share, extrapolated over one step); `None` if
+    /// cold or not usable.
+    fn start(&self, target: T, pose_dy: T) -> Option<(T, T, T)> {
         if !self.warm {
             return None;
         }
@@ -504,9 +590,19 @@ impl<T: Real, const K: usize> WheelState<T, K> {
             math::c(-3.0),
             math::c(3.0),
         );
-        let dv = self.dv * math::exp(step);
-        if dv > T::ZERO && math::is_finite(dv) {
-            Some((dv, p))
+        let dv_load = self.dv * math::exp(step);
+        let drift = match self.drift_rate {
+            Some(r) => r * (pose_dy - self.pose_dy),
+            None => self.drift,
+        };
+        let drift = if math::is_finite(drift) {
+            math::clamp(drift, -math::c::<T>(MAX_DRIFT), math::c(MAX_DRIFT))
+        } else {
+            T::ZERO
+        };
+        let dv = dv_load * math::exp(drift);
+        if dv > T::ZERO && math::is_finite(dv) && dv_load > T::ZERO && math::is_finite(dv_load) {
+            Some((dv, dv_load, p))
         } else {
             None
         }
@@ -872,14 +968,17 @@ fn solve<
     ws.exponent = math::c(1.5);
     ws.patches_dv = None;
     ws.reuse = false;
+    ws.full = [None; K];
     let mut dv = math::c::<T>(0.05);
     // warm start: δ_v scaled by the load change, the patches there matched to the state's slots
     let mut warm = false;
     let warm_start = state
         .as_deref()
-        .and_then(|st| st.start(target_value).map(|s| (st, s)));
-    if let Some((st, (dv_w, p))) = warm_start {
+        .and_then(|st| st.start(target_value, geom.pose.dy).map(|s| (st, s)));
+    let mut dv_load = T::ZERO;
+    if let Some((st, (dv_w, dv_l, p))) = warm_start {
         dv = dv_w;
+        dv_load = dv_l;
         ws.exponent = p;
         contact_patches(geom, dv, &cfg.patches, &mut ws.patches)?;
         ws.patches_dv = Some(dv);
@@ -896,6 +995,8 @@ fn solve<
     let mut vload = T::ZERO;
     let mut coupled = false;
     let mut rounds = 0;
+    // geometry evaluations when the kept full results of the last round were computed
+    let mut full_geometry: Option<u32> = None;
     for round in 0..MAX_COUPLING {
         rounds = round + 1;
         let (d, f, p, c) = split_load(geom, target, dv, mat, cfg, ws)?;
@@ -911,6 +1012,11 @@ fn solve<
         // tangential forces of every patch at these loads → new ratios
         let mut change = T::ZERO;
         let np = ws.patches.len.min(K);
+        // a warm call into a sink without cells keeps the full results of its rounds: the last
+        // round's are the final ones when the final split leaves the loads unchanged
+        let keep = warm && !W::CELLS;
+        let geometry_at_round = ws.geometry_calls;
+        ws.full = [None; K];
         for k in 0..np {
             let nk = ws.loads[k];
             if !(nk > T::ZERO) {
@@ -918,15 +1024,38 @@ fn solve<
             }
             let cr = patch_creepage(geom, &ws.patches.items[k].frame, cfg)?;
             let n = samples_of(&ws.patches, k, &mut ws.samples);
-            // only the totals are used here: no cells, no wear (same forces, bit for bit)
-            let r = solve_patch_forces(
-                &ws.samples[..n],
-                nk,
-                &cr,
-                mat,
-                &cfg.pipeline,
-                &mut ws.pipeline,
-            )?;
+            // the full solve (with wear) when kept; its forces are those of the forces-only
+            // solve, bit for bit, which an error of the wear stage falls back to (the final
+            // solve then reports it, as without keeping)
+            let full = if keep {
+                solve_patch(
+                    &ws.samples[..n],
+                    nk,
+                    &cr,
+                    mat,
+                    &cfg.pipeline,
+                    &mut ws.pipeline,
+                    &mut (),
+                )
+                .ok()
+            } else {
+                None
+            };
+            let r = match full {
+                Some(r) => {
+                    ws.full[k] = Some((nk, r));
+                    r
+                }
+                // only the totals are used here: no cells, no wear (same forces, bit for bit)
+                None => solve_patch_forces(
+                    &ws.samples[..n],
+                    nk,
+                    &cr,
+                    mat,
+                    &cfg.pipeline,
+                    &mut ws.pipeline,
+                )?,
+            };
             let ratio = r.totals.fy / nk;
             change = math::max(change, math::abs(ratio - ws.ratio[k]));
             ws.ratio[k] = ratio;
@@ -934,6 +1063,7 @@ fn solve<
         // a cold round 0 starts from r = 0 and cannot see a change; a warm one can
         if (round > 0 || warm) && change < math::c(1e-5) {
             coupled = true;
+            full_geometry = Some(geometry_at_round);
             break;
         }
     }
@@ -964,17 +1094,31 @@ fn solve<
         }
         let frame = ws.patches.items[k].frame;
         let cr = patch_creepage(geom, &frame, cfg)?;
-        let n = samples_of(&ws.patches, k, &mut ws.samples);
         sink.begin_patch(res.n);
-        let r = solve_patch(
-            &ws.samples[..n],
-            nk,
-            &cr,
-            mat,
-            &cfg.pipeline,
-            &mut ws.pipeline,
-            &mut Forward(sink),
-        )?;
+        // the last round's full result if it was solved on these patches at this very load
+        let kept = match ws.full[k] {
+            Some((n_kept, r))
+                if full_geometry == Some(ws.geometry_calls) && n_kept == nk && !W::CELLS =>
+            {
+                Some(r)
+            }
+            _ => None,
+        };
+        let r = match kept {
+            Some(r) => r,
+            None => {
+                let n = samples_of(&ws.patches, k, &mut ws.samples);
+                solve_patch(
+                    &ws.samples[..n],
+                    nk,
+                    &cr,
+                    mat,
+                    &cfg.pipeline,
+                    &mut ws.pipeline,
+                    &mut Forward(sink),
+                )?
+            }
+        };
         res.converged &= r.converged;
         if res.n < K {
             res.patches[res.n] = Some(WheelPatch {
@@ -1001,6 +1145,24 @@ fn solve<
         st.target = target_value;
         st.dv = dv;
         st.exponent = ws.exponent;
+        // the pose's share of this call's change of δ_v (0 after a cold call)
+        let drift = if warm && dv > T::ZERO && dv_load > T::ZERO {
+            math::ln(dv / dv_load)
+        } else {
+            T::ZERO
+        };
+        st.drift = if math::is_finite(drift) {
+            math::clamp(drift, -math::c::<T>(MAX_DRIFT), math::c(MAX_DRIFT))
+        } else {
+            T::ZERO
+        };
+        let ddy = geom.pose.dy - st.pose_dy;
+        st.drift_rate = if warm && math::abs(ddy) > math::c(DRIFT_DY_MM) {
+            Some(st.drift / ddy)
+        } else {
+            None
+        };
+        st.pose_dy = geom.pose.dy;
         st.n = np;
         for (k, slot) in st.slots.iter_mut().enumerate() {
             *slot = if k < np {

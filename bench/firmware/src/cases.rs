@@ -679,10 +679,12 @@ pub fn wheel_tread<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Re
 
 /// One time step of a vehicle-dynamics loop (issue 6, warm start): the [`wheel_case`] set-up
 /// placed and solved at lateral shift 0 with `wheel::solve_wheel_warm` from a cold
-/// `WheelState` (the warm-up call of the previous step, not metered), then the pair is moved to
-/// the next pose, lateral shift 0.05 mm, yaw 1.2e-3 · 0.05 rad, with `WheelRail::reposition`
-/// ("wheel reposition") and solved warm from that state ("wheel step (warm)"). Results compared
-/// as in [`wheel_case`], plus the geometry passes of the warm call (per precision, exact).
+/// `WheelState`, then moved to lateral shift 0.05 mm (yaw 1.2e-3 · dy rad) and solved warm (the
+/// warm-up steps of the previous time steps, not metered: after two calls the state carries the
+/// drift of δ_v with the shift, as in a running loop), then moved on to 0.10 mm with
+/// `WheelRail::reposition` ("wheel reposition") and solved warm from that state ("wheel step
+/// (warm)"). Results compared as in [`wheel_case`], plus the geometry passes of the warm call
+/// (per precision, exact).
 pub fn wheel_step<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
     let (wheel, rail) = T::tables();
     let setup = TrackSetup::<T>::standard();
@@ -711,7 +713,10 @@ pub fn wheel_step<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Res
     let mut st = WheelState::<T, 4>::new();
     let first = solve_wheel_warm(&geom, fz, &mat, &cfg, &mut ws, &mut st, &mut ())?;
     o.flag(first.converged && st.is_warm());
-    let pose = pose_of(0.05);
+    geom.reposition(&pose_of(0.05), Side::Right)?;
+    let second = solve_wheel_warm(&geom, fz, &mat, &cfg, &mut ws, &mut st, &mut ())?;
+    o.flag(second.converged && st.is_warm());
+    let pose = pose_of(0.10);
     m.call("wheel reposition", || {
         black_box(&mut geom).reposition(black_box(&pose), Side::Right)
     })?;
