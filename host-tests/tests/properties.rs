@@ -149,7 +149,7 @@ proptest! {
             *s = Strip {
                 y: v[0], dy: v[1], a: v[2], xc: v[3], p_hat: v[4],
                 flex: Flexibilities { l1: v[5], l2: v[6], l3: v[7] },
-                c11: v[8], c22: v[9], c23: v[10], sqrt_b_over_a: v[11],
+                c11: v[8], c22: v[9], c23: v[10], c33: v[12], sqrt_b_over_a: v[11],
             };
         }
         let mut pn = [[0.0f64; 8]; 8];

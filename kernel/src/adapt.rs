@@ -172,6 +172,7 @@ pub fn apply<T: Real, const S: usize, const C: usize>(
                 s.c11 = k.c11;
                 s.c22 = k.c22;
                 s.c23 = k.c23;
+                s.c33 = k.c33;
                 s.sqrt_b_over_a = sq;
             }
         }

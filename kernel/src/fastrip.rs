@@ -4,7 +4,8 @@
 //!
 //! Per strip j (creepages made dimensionless with the strip pressure slope P_j = μ p̂_j / a_j):
 //! ξ* = −(Gξ/(2P))(4(1−ν)/π²)C11, η* = −(G(1−ν)η/(2P))(4/π²)C22, φ* = −(Gφ/(2P))(3/π)√(b/a)C23,
-//! X = ξ* − φ* y_j; slip-zone half-length d = d̃/(1−ν) with
+//! X = ξ* − φ* y_j (published; the default forms X = k_x(ξ − wφ y_j) instead, k_x = ξ*/ξ,
+//! w = 4aC33/(bC11), see [`SpinInX`]); slip-zone half-length d = d̃/(1−ν) with
 //! d̃ = (η*² + X²)/(√Δ − η*φ*), Δ = η*² + (1 − φ*²)X² (cancellation-free root; `Contact5` rule).
 //! Adhesion zone x̄ ∈ (2d − a_j, a_j] (x̄ = x − x_c,j): p = P(κS₁ − κ'S₂, λS₁ − λ'S₂),
 //! S₁ = √(a_j² − x̄²), S₂ = √((a_j − d)² − (x̄ − d)²). Slip zone: p = μ p_n · p^F/|p^F| with p^F the
@@ -17,6 +18,8 @@
 //! Choices (methods.md [UNCERTAIN] items, documented and selectable):
 //! * [`LambdaVariant::StripTheory`] (default, §4.4 derivation) or [`LambdaVariant::ContactCompat`]
 //!   (CONTACT M=5/M=6: d instead of (1−ν)d in the spin term, then normalised to κ² + λ² = 1).
+//! * [`SpinInX::Linear`] (default), [`SpinInX::RigidSlip`] or [`SpinInX::Lateral`] (published,
+//!   used by the CONTACT modes and `spec_clip`): the weight of the spin in X_j (evidence below).
 //! * [`LargeSpin::Contact5`] (default: same root while Δ ≥ 0 and √Δ − η*φ* > 0, else full slip) or
 //!   [`LargeSpin::FullSlip`] (CONTACT M=7: full slip whenever |φ*| ≥ 1).
 //! * Slip velocity: always the upwind form of §4.2, s = w + (u(x_i) − u(x_{i+1}))/δx with
@@ -40,7 +43,8 @@
 //! | `Coulomb` (on w̃) | 0.84 % | 6.99 % | 77.7 % | 1.28 % | 7.91 % |
 //! | `CoulombRigidSlip` | 0.43 % | 4.97 % | 76.4 % | 0.50 % | 5.41 % |
 //! | `CoulombRigidSlip` + `LargeSpin::FullSlip` | 0.43 % | 4.46 % | 13.8 % | 0.51 % | 5.02 % |
-//! | `CoulombRigidSlip` + `BoundCheck::Local` or `Strip` (default) | 0.43 % | 4.46 % | 13.8 % | 0.51 % | 4.76 % |
+//! | `CoulombRigidSlip` + `BoundCheck::Local` or `Strip`, `SpinInX::Lateral` | 0.43 % | 4.46 % | 13.8 % | 0.51 % | 4.76 % |
+//! | the same with `SpinInX::Linear` (**default**) | 0.43 % | 3.61 % | 11.14 % | 0.37 % | 3.05 % |
 //!
 //! `Clip` saturates along (ξ/L1, η/L2) instead of the creepage direction (up to 12.9 % of μF_n at
 //! full slip, a/b = 0.2); Coulomb's law on FASTSIM's own w̃ fixes that without spin, and the true
@@ -53,10 +57,31 @@
 //! admissible strips at the edge elements (FaStrip-AC on NORM pressure, 1353 dy −2/0/6 mm against
 //! TANG: eq. 31 1.26 % with `Local`, 0.98 % with `Strip`). Against the grid-converged
 //! exact solution of the §10.5 case (TANG Richardson 20/40: F_y/(μN) = −0.6266) the default gives
-//! −0.6291 on 220², the spec's `Clip` pass −0.6097. What is left (P95 4.5 %) is spin with
-//! longitudinal creepage on wide patches (a/b ≤ 0.5, φ ρ/μ ≥ 1, |ΔF| up to 14 %): strip theory's
-//! X_j = ξ* − φ* y_j weights the spin by its linear-theory factor 3π√(b/a)C23/(4(1−ν)C11) ≈ 1.2,
-//! so the x-traction changes sign at y = ξ/(1.2φ) instead of ξ/φ once the strips slip.
+//! −0.6291 on 220², the spec's `Clip` pass −0.6097.
+//! * Spin in the longitudinal creepage ([`FastripSettings::spin_in_x`], 2026-12-02): the published
+//!   X_j = ξ* − φ* y_j ([`SpinInX::Lateral`]) weights the spin by its *lateral* linear-theory
+//!   coefficient, w = 3π√(b/a)C23/(4(1−ν)C11) ≈ 1.2 times the weight of ξ. In the linear limit the
+//!   strips' spin moment is then −w G C11 φ a b³/4 (closed form, host-tests
+//!   `elliptic_validation::fastrip_linear_spin_moment`), +42 % of Kalker's C33 at a/b = 0.1, +2 % at
+//!   1, −19 % at 10; and once strips slip the x-traction changes sign at y = ξ/(wφ) instead of at the
+//!   zero of the rigid slip — the largest remaining error with `Lateral` (ΔF P95 4.46 %: spin with
+//!   longitudinal creepage on wide patches, a/b ≤ 0.5). The default [`SpinInX::Linear`] takes
+//!   w = 4aC33/(bC11), which reproduces Kalker's C33 in the linear limit (so C11, C22, C23 and C33
+//!   all hold there; F_x, F_y of the linear limit do not depend on w). [`SpinInX::RigidSlip`]
+//!   (w = 1, Kalker's strip theory) is kept for comparison. Evidence (`study-hertz`, 3220 Hertzian
+//!   cases, the table above; and `study-wheelrail --quick`, FaStrip-AC on the 40 sweep patches at
+//!   83.3 kN against TANG, eq. 31 / floored / mean |ΔF| / max |ΔF| / mean |ΔM_z|, %):
+//!
+//! | `spin_in_x` | matrix ΔF median / P95 / max | matrix ΔM_z median / P95 | §10.5 case M_z (exact −4.731e4) | wheel/rail on NORM pressure | on STRIPES pressure |
+//! |---|---|---|---|---|---|
+//! | `Lateral` (published) | 0.43 / 4.46 / 13.75 | 0.51 / 4.76 | −4.654e4 (−1.6 %) | 2.28 / 2.03 / 0.78 / 3.00 / 1.55 | 3.04 / 2.28 / 0.80 / 5.49 / 1.76 |
+//! | `RigidSlip` | 0.43 / 3.52 / 11.75 | 0.43 / 3.04 | −4.530e4 (−4.3 %) | 1.85 / 1.67 / 0.73 / 2.39 / 1.30 | 2.76 / 2.04 / 0.76 / 5.49 / 1.67 |
+//! | `Linear` (**default**) | 0.43 / 3.61 / 11.14 | 0.37 / 3.05 | −4.677e4 (−1.1 %) | 1.88 / 1.68 / 0.75 / 2.74 / 1.44 | 3.07 / 2.33 / 0.82 / 5.49 / 1.69 |
+//!
+//!   `RigidSlip` is as good on the matrix but misses M_z on the §10.5 case (a/b = 2, where its
+//!   linear-limit M_z is −19 % of Kalker's). What is left with `Linear` (P95 3.6 %, target 3 %) is
+//!   a/b = 5 with ρφ/μ = 0.5 at low creepage (up to 11.1 %) and a/b = 0.2 with large spin near
+//!   saturation (up to 10.2 %).
 //! * CONTACT M=6 details are options: [`FastripSettings::leading_slip_retry`] and
 //!   [`FastripSettings::edge_margin`]; the M=6 load heuristic of the parabolic bound is
 //!   [`m6_parabolic_bound`].
@@ -90,6 +115,25 @@ pub enum LargeSpin {
     FullSlip,
 }
 
+/// How the spin enters the longitudinal creepage X_j of strip j (methods.md §4.2): X_j = k_x(ξ −
+/// w φ y_j), k_x = ξ*/ξ = −(G/(2P))(4/π²)(1−ν)C11, with the weight w of this option.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum SpinInX {
+    /// Published FaStrip (Sichani et al. 2016, methods.md §4.2): X_j = ξ* − φ* y_j, i.e. the spin
+    /// weighted by its *lateral* linear-theory coefficient C23 (φ* = −(Gφ/(2P))(3/π)√(b/a)C23):
+    /// w = 3π√(b/a)C23/(4(1−ν)C11) ≈ 1.2.
+    Lateral,
+    /// w = 1: each strip driven by its rigid longitudinal slip ξ − φ y_j, as in Kalker's strip
+    /// theory.
+    RigidSlip,
+    /// w = 4aC33/(bC11) at the reference ellipse: the weight for which the strips' linear-limit
+    /// spin moment, −w G C11 φ a b³/4, equals Kalker's −G c⁴ C33 φ (default). F_x, F_y of the
+    /// linear limit do not depend on w (the spin part of X_j is odd in y). φ* (lateral, C23) is
+    /// the same in Δ and λ for all three. See the module docs for the evidence.
+    Linear,
+}
+
 /// Optional check of the strip-theory adhesion traction against the bound (CONTACT M=5).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "defmt", derive(defmt::Format))]
@@ -121,6 +165,8 @@ pub struct FastripSettings<T> {
     pub large_spin: LargeSpin,
     /// Bound check.
     pub bound_check: BoundCheck<T>,
+    /// Weight of the spin in the strips' longitudinal creepage X_j.
+    pub spin_in_x: SpinInX,
     /// CONTACT M=6: if the leading contact cell of a strip slips in the direction pass, repeat the
     /// pass with the single flexibility L_t (argument √(a b), mm). `None` (default): off.
     pub leading_slip_retry: Option<T>,
@@ -142,6 +188,7 @@ impl<T: Real> FastripSettings<T> {
             lambda: LambdaVariant::StripTheory,
             large_spin: LargeSpin::Contact5,
             bound_check: BoundCheck::Strip,
+            spin_in_x: SpinInX::Linear,
             leading_slip_retry: None,
             edge_margin: T::ZERO,
         }
@@ -155,6 +202,7 @@ impl<T: Real> FastripSettings<T> {
         Self {
             direction: FastsimSettings::canonical(mu, TractionBound::Elliptic),
             bound_check: BoundCheck::Off,
+            spin_in_x: SpinInX::Lateral,
             ..Self::new(mu)
         }
     }
@@ -224,7 +272,8 @@ pub struct StripSolution<T> {
     pub phi_star: T,
 }
 
-/// Strip-theory quantities of strip (y, a_j, p̂_j, C_ij) for creepages `cr`.
+/// Strip-theory quantities of strip (y, a_j, p̂_j, C_ij) for creepages `cr`, the spin in X_j as
+/// `spin_in_x` says.
 #[allow(clippy::too_many_arguments)]
 pub fn strip_solution<T: Real>(
     s: &crate::patch::Strip<T>,
@@ -234,13 +283,24 @@ pub fn strip_solution<T: Real>(
     nu: T,
     lambda: LambdaVariant,
     large_spin: LargeSpin,
+    spin_in_x: SpinInX,
 ) -> StripSolution<T> {
     let p = mu * s.p_hat / s.a;
     let four_pi2 = c::<T>(4.0) / (T::PI * T::PI);
     let xs = -(g * cr.xi / (T::TWO * p)) * four_pi2 * (T::ONE - nu) * s.c11;
     let es = -(g * (T::ONE - nu) * cr.eta / (T::TWO * p)) * four_pi2 * s.c22;
     let ps = -(g * cr.phi / (T::TWO * p)) * (c::<T>(3.0) / T::PI) * s.sqrt_b_over_a * s.c23;
-    let x = xs - ps * s.y;
+    let x = match spin_in_x {
+        SpinInX::Lateral => xs - ps * s.y,
+        SpinInX::RigidSlip => {
+            -(g * (cr.xi - cr.phi * s.y) / (T::TWO * p)) * four_pi2 * (T::ONE - nu) * s.c11
+        }
+        SpinInX::Linear => {
+            // w = 4 (a/b) C33/C11 with b/a = sqrt_b_over_a²
+            let w = c::<T>(4.0) * s.c33 / (s.c11 * s.sqrt_b_over_a * s.sqrt_b_over_a);
+            -(g * (cr.xi - w * cr.phi * s.y) / (T::TWO * p)) * four_pi2 * (T::ONE - nu) * s.c11
+        }
+    };
     let full = StripSolution {
         slope: p,
         d: s.a,
@@ -366,7 +426,7 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
             continue;
         }
         let half = s.a - margin;
-        let ss = strip_solution(&s, cr, mu, g, nu, set.lambda, set.large_spin);
+        let ss = strip_solution(&s, cr, mu, g, nu, set.lambda, set.large_spin, set.spin_in_x);
         // Adhesion-zone tractions, computed once (by the bound check, if any) and reused.
         let mut adh = [[T::ZERO; 2]; C];
         let mut cached = false;

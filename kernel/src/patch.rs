@@ -151,6 +151,8 @@ pub struct Strip<T> {
     pub c22: T,
     /// C23 at the reference ellipse (FaStrip).
     pub c23: T,
+    /// C33 at the reference ellipse (FaStrip's spin weight in X_j, [`crate::fastrip::SpinInX::Linear`]).
+    pub c33: T,
     /// √(b_ref/a_ref) of the reference ellipse (FaStrip spin term).
     pub sqrt_b_over_a: T,
 }
@@ -165,6 +167,7 @@ impl<T: Real> Strip<T> {
         self.c11 = k.c11;
         self.c22 = k.c22;
         self.c23 = k.c23;
+        self.c33 = k.c33;
         self.sqrt_b_over_a = math::sqrt(b_ref / a_ref);
         Ok(self)
     }
@@ -268,6 +271,7 @@ impl<T: Real, const S: usize, const C: usize> StripPatch<T, S, C> {
                 check_positive(s.c11, "C11")?;
                 check_positive(s.c22, "C22")?;
                 check_positive(s.c23, "C23")?;
+                check_positive(s.c33, "C33")?;
                 check_positive(s.sqrt_b_over_a, "sqrt(b/a)")?;
             }
         }
@@ -449,6 +453,7 @@ impl<T: Real, const S: usize, const C: usize> StripPatch<T, S, C> {
             s.c11 = k.c11;
             s.c22 = k.c22;
             s.c23 = k.c23;
+            s.c33 = k.c33;
             s.sqrt_b_over_a = sq;
             s.p_hat = p0e * s.a / ae;
         }

@@ -27,7 +27,7 @@ use std::sync::Mutex;
 use std::time::Instant;
 use wrc_host_tests::table::Table;
 use wrc_host_tests::tang::{hertz_pressure, richardson, Creepage, Grid, TangOptions, TangSolver};
-use wrc_kernel::fastrip::{fastrip, FastripSettings, LargeSpin};
+use wrc_kernel::fastrip::{fastrip, FastripSettings, LargeSpin, SpinInX};
 use wrc_kernel::fastsim::{fastsim, FastsimSettings, SlipRule};
 use wrc_kernel::hertz::curvatures_from_semi_axes;
 use wrc_kernel::patch::{self, GridExtent, HertzPressure, StripPatch, TractionBound};
@@ -74,9 +74,11 @@ struct Row {
 /// * FaStrip: `fastrip_spec` = `FastripSettings::spec_clip` (the defaults before this study: `Clip`
 ///   direction pass, no bound check); `fastrip_coulomb`, `fastrip_rigid`: the same with the
 ///   direction pass's slip rule changed; `fastrip_rigid_fullslip`: plus `LargeSpin::FullSlip`;
-///   `fastrip` = `FastripSettings::new`, the kernel default (rigid-slip Coulomb direction pass,
-///   `Contact5`, `BoundCheck::Strip`).
-const MODEL_NAMES: [&str; 10] = [
+///   `fastrip_lateral` = `FastripSettings::new` with the published spin weight in X_j
+///   (`SpinInX::Lateral`, the default until 2026-12-02); `fastrip_spin_rigid`: with
+///   `SpinInX::RigidSlip`; `fastrip` = `FastripSettings::new`, the kernel default (rigid-slip
+///   Coulomb direction pass, `Contact5`, `BoundCheck::Strip`, `SpinInX::Linear`).
+const MODEL_NAMES: [&str; 12] = [
     "fastsim_parabolic",
     "fastsim_elliptic",
     "fastsim_parabolic_coulomb",
@@ -86,6 +88,8 @@ const MODEL_NAMES: [&str; 10] = [
     "fastrip_coulomb",
     "fastrip_rigid",
     "fastrip_rigid_fullslip",
+    "fastrip_lateral",
+    "fastrip_spin_rigid",
     "fastrip",
 ];
 
@@ -139,6 +143,14 @@ fn kernel_models(a: f64, b: f64, cr: Creepage, c: f64) -> Vec<F3> {
                 direction: dir(SlipRule::CoulombRigidSlip),
                 large_spin: LargeSpin::FullSlip,
                 ..spec
+            }),
+            "fastrip_lateral" => fr(FastripSettings {
+                spin_in_x: SpinInX::Lateral,
+                ..FastripSettings::new(MU)
+            }),
+            "fastrip_spin_rigid" => fr(FastripSettings {
+                spin_in_x: SpinInX::RigidSlip,
+                ..FastripSettings::new(MU)
             }),
             "fastrip" => fr(FastripSettings::new(MU)),
             other => unreachable!("model {other}"),
@@ -493,7 +505,10 @@ fn write_and_summarise(
     for (mi, name) in MODEL_NAMES.iter().enumerate() {
         let mut all: Vec<f64> = Vec::new();
         let mut allm: Vec<f64> = Vec::new();
-        let detail = matches!(*name, "fastsim_parabolic" | "fastrip_spec" | "fastrip");
+        let detail = matches!(
+            *name,
+            "fastsim_parabolic" | "fastrip_spec" | "fastrip_lateral" | "fastrip"
+        );
         if detail {
             println!(
                 "\n{name}: |ΔF|/(μFn) in % (median / P95 / max) and |ΔMz|/(μFn c) median / P95"
