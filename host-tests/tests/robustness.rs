@@ -1481,7 +1481,7 @@ proptest! {
     }
 
     /// Pipeline options full of garbage: strips per region 0..40, STRIPES options (blend, b_min,
-    /// filter lengths) NaN/negative/huge, an explicit FASTSIM bound with garbage parameters.
+    /// filter lengths, merge depth, soft measure) NaN/negative/huge, an explicit FASTSIM bound with garbage parameters.
     #[test]
     fn pipeline_config_garbage(
         dy in -8.0..8.0f64, spr in 0usize..40, blend in mostly(0.0..1.0f64),
@@ -1503,6 +1503,9 @@ proptest! {
             // the inter-region coupling on half of the cases (from an existing input, so that the
             // generated sequence stays the same)
             interaction: spr % 2 == 1,
+            // merge depth and soft measure from existing (partly garbage) inputs as well
+            merge_depth: if spr % 3 == 0 { blend } else { 0.25 },
+            soft_measure: if spr % 4 == 0 { 1e-3 * leps } else { 0.005 },
         };
         if fastsim {
             cfg.method = Method::Fastsim;
@@ -1531,7 +1534,8 @@ proptest! {
                     let stripes_ok = (0.0..1.0).contains(&blend)
                         && (1e-7..1e-5).contains(&bmin)
                         && (hm < 2 || (0.1..5.0).contains(&leps))
-                        && (lm < 2 || (0.05..1.0).contains(&frac));
+                        && (lm < 2 || (0.05..1.0).contains(&frac))
+                        && (spr % 4 != 0 || (0.1..5.0).contains(&leps));
                     if spr < 8 && stripes_ok {
                         prop_assert_eq!(e, Error::GridTooSmall("strips per region"));
                     }

@@ -151,6 +151,13 @@
 //! the bound |ΔF|/(μF_z) ≤ 2.1e-4 from them and asserts it. The warm maxima are the steps
 //! where a region appears or splits (a new, cold patch slot).
 //!
+//! The inner loop (the STRIPES load whose approach equals the patch's geometric approach) is a
+//! secant in (ln δ, ln N) safeguarded by the bracket of the root seen so far (false position,
+//! Illinois, when the secant leaves it or keeps one end twice): δ(N) is monotone but can be steep
+//! over a short load range (S1002/UIC60 1360 mm, 83.3 kN, dy 4.6198633 mm: dδ/dN ×13 over 2 N of
+//! 81 kN, where a basin's filter length and the inter-region coupling change quickly), on which the
+//! plain secant used up its 16 solves.
+//!
 //! Bounds: at most [`MAX_OUTER`] geometry passes and [`MAX_INNER`] STRIPES solves per patch and
 //! pass; the result reports the passes used and whether both loops met their tolerances
 //! (`converged`); a non-converged result is still the last consistent state (finite), flagged.
@@ -659,11 +666,35 @@ fn load_for_approach<
     } else {
         guess
     };
+    // Bracket of the root in (ln N, ln δ − ln a): the largest load seen below the approach and
+    // the smallest above it. δ(N) is monotone but can be steep over a short load range (a
+    // basin's filter length or its inter-region coupling changing quickly, e.g. S1002/UIC60
+    // 1360 mm dy 4.6198633 mm: dδ/dN ×13 over 2 N of 81 kN), where the unsafeguarded secant
+    // keeps stepping across it; a secant step outside the bracket is replaced by the
+    // false-position step on the bracket (Illinois: the end kept twice has its residual halved).
+    let mut lo: Option<(T, T)> = None;
+    let mut hi: Option<(T, T)> = None;
+    let mut kept_lo = 0u32;
+    let mut kept_hi = 0u32;
     for it in 0..MAX_INNER {
         let sol = ws.stripes.solve(samples, n1, mat, &cfg.pipeline.stripes)?;
         let d1 = sol.delta;
         if !(d1 > T::ZERO) || !math::is_finite(d1) {
             return Err(Error::NonFinite("stripes approach"));
+        }
+        let r1 = math::ln(d1) - math::ln(a);
+        if r1 < T::ZERO {
+            if lo.is_none_or(|(n, _)| n1 > n) {
+                lo = Some((n1, r1));
+            }
+            kept_hi += 1;
+            kept_lo = 0;
+        } else {
+            if hi.is_none_or(|(n, _)| n1 < n) {
+                hi = Some((n1, r1));
+            }
+            kept_lo += 1;
+            kept_hi = 0;
         }
         if math::abs(d1 - a) <= cfg.tol * a {
             state.n = n1;
@@ -678,8 +709,24 @@ fn load_for_approach<
             return Ok((n, sol.converged, it + 1));
         }
         // N as a function of δ: secant in (ln δ, ln N), exponent 1.5 (Hertz) for the first step.
-        let (next, p) = loglog_step_inverse(d0, n0, d1, n1, a);
+        let (mut next, p) = loglog_step_inverse(d0, n0, d1, n1, a);
         state.exponent = p;
+        if let (Some((nl, rl)), Some((nh, rh))) = (lo, hi) {
+            if !(next > nl && next < nh) || kept_lo >= 2 || kept_hi >= 2 {
+                let half = |r: T, kept: u32| if kept >= 2 { r * T::HALF } else { r };
+                let (rl, rh) = (half(rl, kept_lo), half(rh, kept_hi));
+                let (xl, xh) = (math::ln(nl), math::ln(nh));
+                let x = if rh > rl {
+                    xl - rl * (xh - xl) / (rh - rl)
+                } else {
+                    T::HALF * (xl + xh)
+                };
+                next = math::exp(x);
+                if !(next > nl && next < nh) {
+                    next = math::exp(T::HALF * (xl + xh));
+                }
+            }
+        }
         n0 = n1;
         d0 = d1;
         n1 = next;
