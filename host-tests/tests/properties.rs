@@ -2,7 +2,9 @@
 //! every call returns a typed error or finite results.
 
 use proptest::prelude::*;
-use wrc_kernel::fastrip::{fastrip, BoundCheck, FastripSettings, LambdaVariant, LargeSpin};
+use wrc_kernel::fastrip::{
+    fastrip, BoundCheck, FastripSettings, LambdaVariant, LargeSpin, SpinInX,
+};
 use wrc_kernel::fastsim::{fastsim, FastsimSettings, FlexMode};
 use wrc_kernel::patch::{
     CellPressure, Creepage, Ellipse, Flexibilities, GridExtent, HertzPressure, SemiEllipticStrips,
@@ -94,7 +96,7 @@ proptest! {
         fx in prop_oneof![1.0..3.0f64, garbage()], fy in prop_oneof![1.0..3.0f64, garbage()],
         xi in creep(), eta in creep(), phi in creep(), mu in prop_oneof![0.05..1.0f64, garbage()],
         c_off in prop_oneof![Just(0.0), Just(1.0 / 6.0), garbage()],
-        flexmode in 0usize..3, boundk in 0usize..4, variant in 0usize..8,
+        flexmode in 0usize..3, boundk in 0usize..4, variant in 0usize..8, spin in 0usize..3,
     ) {
         let mat = Material::from_g_nu(82_000.0, 0.28).unwrap();
         let Ok((patch, ell)) = StripPatch::<f64, 12, 10>::hertz(a, b, n, &mat, GridExtent { fx, fy }) else {
@@ -125,6 +127,7 @@ proptest! {
         fs.lambda = if variant & 1 == 0 { LambdaVariant::StripTheory } else { LambdaVariant::ContactCompat };
         fs.large_spin = if variant & 2 == 0 { LargeSpin::Contact5 } else { LargeSpin::FullSlip };
         fs.bound_check = match variant / 4 { 0 => BoundCheck::Off, _ => BoundCheck::Local };
+        fs.spin_in_x = [SpinInX::Linear, SpinInX::RigidSlip, SpinInX::Lateral][spin];
         if let Ok(r) = fastrip(&patch, &HertzPressure(ell), &cr, &fs, &mut ()) { finite_totals(&r); }
         let m6 = FastripSettings::contact_m6(mu, Ellipse { p0: ell.p0 * 2.0, ..ell }, fs.lambda);
         if let Ok(r) = fastrip(&patch, &HertzPressure(ell), &cr, &m6, &mut ()) { finite_totals(&r); }
