@@ -138,9 +138,19 @@
 //! | geometry passes · STRIPES solves of the split · coupling rounds | 7/9 · 17/25 · 3/3 | 3/7 · 6/17 · 1/3 | 2/7 · 4/17 · 1/3 | 2/4 · 3/10 · 1/3 |
 //!
 //! (Mean instructions per call, ramp / hunting: cold 11.36 / 8.96 M, warm before 5.74 / 4.37 M,
-//! warm 4.53 / 3.38 M, realtime 3.04 / 2.29 M.) The worst calls are the steps where a contact region appears or splits
-//! (a new, cold patch slot: up to 3 coupling rounds and 25 STRIPES solves); they set the
-//! worst case to 3.9 × (ramp) and 4.0 × (hunting) the warm median.
+//! warm 4.53 / 3.38 M, realtime 3.04 / 2.29 M.) The table was measured on commit 77cad77
+//! (before the STRIPES default of baa065d). The worst calls are the steps where a contact
+//! region appears or splits (a new, cold patch slot: up to 3 coupling rounds and 25 STRIPES
+//! solves); they set the worst case to 3.9 × (ramp) and 4.0 × (hunting) the warm median.
+//!
+//! With the STRIPES default of baa065d (inter-region elastic coupling on, `merge_depth` 0.25;
+//! measured on 061784c, same example): ramp cold 11.42 M / 1828 M (mean 53.8 M), warm
+//! 4.27 M / 299 M (mean 21.3 M); hunting cold 8.99 M / 96.9 M (mean 11.3 M), warm 3.00 M /
+//! 40.1 M (mean 4.23 M). The medians hardly move; the maxima are the steps with a tread and a
+//! flange-root region at once (ramp dy 4.5…5.3 mm: host time 20–360 ms per cold call and
+//! 10–110 ms per warm one, i.e. roughly 5 ms per coupled STRIPES solve against ≈ 26 µs for one
+//! without the coupling; the cold call at dy 5.01 mm takes 28 geometry passes and 136 STRIPES
+//! solves), so the worst case is now set by the coupled STRIPES solve, not by the load loop.
 //!
 //! Warm − cold differences (median / max over the steps, per patch): ramp |ΔF|/(μF_z) 1.1e-7 /
 //! 9.0e-7, |ΔN|/F_z 1.7e-7 / 9.6e-7, |Δpmax|/pmax 5.5e-8 / 4.1e-7, |Δarea|/area 1.2e-7 / 4.5e-6,
