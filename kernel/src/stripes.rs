@@ -1208,6 +1208,13 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         let w2 = c::<T>(0.361_803_398_874_989_5);
         let nodes = [(t1, w1), (t2, w2), (-t2, w2), (-t1, w1)];
         let quarter = c::<T>(0.25);
+        // θ between every pair of basins, once per field (the pair loop below used it n² times).
+        let mut th = [[T::ZERO; NB]; NB];
+        for (k, row) in th.iter_mut().enumerate().take(nb) {
+            for (l, v) in row.iter_mut().enumerate().take(nb) {
+                *v = self.theta_between(k, l);
+            }
+        }
         let mut any = false;
         for j in 0..n {
             let h = self.hu[j];
@@ -1220,6 +1227,11 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             let kj = usize::from(self.zone[j]).min(nb - 1);
             let kj1 = (kj + 1).min(nb - 1);
             let (wj0, wj1) = (T::ONE - self.sw[j], self.sw[j]);
+            // w_ij = ω_i(k)·thj[k] + ω_i(k+1)·thj[k+1], thj[k] = ω_j(l)θ_kl + ω_j(l+1)θ_k,l+1
+            let mut thj = [T::ZERO; NB];
+            for (k, v) in thj.iter_mut().enumerate().take(nb) {
+                *v = wj0 * th[k][kj] + wj1 * th[k][kj1];
+            }
             let reg = quarter * sj.dy * sj.dy;
             for i in 0..n {
                 if i == j {
@@ -1228,10 +1240,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                 let ki = usize::from(self.zone[i]).min(nb - 1);
                 let ki1 = (ki + 1).min(nb - 1);
                 let (wi0, wi1) = (T::ONE - self.sw[i], self.sw[i]);
-                let w = wi0
-                    * (wj0 * self.theta_between(ki, kj) + wj1 * self.theta_between(ki, kj1))
-                    + wi1
-                        * (wj0 * self.theta_between(ki1, kj) + wj1 * self.theta_between(ki1, kj1));
+                let w = wi0 * thj[ki] + wi1 * thj[ki1];
                 if w <= T::ZERO {
                     continue;
                 }
