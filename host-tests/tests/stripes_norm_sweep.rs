@@ -323,6 +323,19 @@ fn norm_region_loads(p: &PatchCase) -> Vec<f64> {
         .collect()
 }
 
+/// The band's cases in table order (load, then shift): 1360 mm, right wheel, dy = 4.05…4.95 mm
+/// by 0.05 mm, at each of [`SWEEP_LOADS`].
+fn band_cases(w: &Table, r: &Table) -> Vec<SweepCase> {
+    let mut v = vec![];
+    for load in SWEEP_LOADS {
+        for k in 1..20 {
+            let dy = 4.0 + 0.05 * k as f64;
+            v.push(sweep_case(w, r, wrc_kernel::geometry::Side::Right, 1360.0, dy, load).unwrap());
+        }
+    }
+    v
+}
+
 /// Known issue-6 misses on the band with the default (per wheel, |Δpmax| > 20 %). Empty since
 /// the default has `StripesConfig::merge_depth` 0.25 and the inter-region coupling (2026-12-02);
 /// before, ten cases missed: STRIPES merged the basins across the concave valley between tread
@@ -357,53 +370,41 @@ fn stripes_against_norm_on_the_flange_root_band() {
     let mut band = vec![];
     let mut ws = Box::new(DefaultWorkspace::<f64>::new());
     let mut shares = vec![];
-    for load in SWEEP_LOADS {
-        for k in 1..20 {
-            let c = sweep_case(
-                &w,
-                &r,
-                wrc_kernel::geometry::Side::Right,
-                1360.0,
-                4.0 + 0.05 * k as f64,
-                load,
-            )
-            .unwrap();
-            let sol =
-                solve_sweep_case(&w, &r, &c, &o).unwrap_or_else(|e| panic!("{}: {e}", c.label));
-            assert!(sol.wheel.converged, "{}", c.label);
-            band.push(line(c.label.clone(), &sol));
-            let p = &sol.patches[sol.main()];
-            let mut cfg = PipelineConfig::<f64>::recommended(0.3, SWEEP_SPEED);
-            assert!(cfg.stripes.interaction);
-            cfg.stripes.interaction = false;
-            let off = solve_patch(
-                &p.stripes_samples,
-                p.load,
-                &p.creepage,
-                &wrc_kernel::Material::steel(),
-                &cfg,
-                &mut ws,
-                &mut (),
-            )
-            .unwrap();
-            assert!(off.converged, "{}", c.label);
-            let nl = norm_region_loads(p);
-            let total = p.load;
-            let share = |x: f64| x / total;
-            // regions that correspond (tread, flange root): the uncoupled flange-root share within
-            // 25 points of NORM's (not e.g. a sliver beside one merged region)
-            if nl.len() == 2
-                && p.kernel.n_regions == 2
-                && off.n_regions == 2
-                && (share(off.regions[1].load) - share(nl[1])).abs() < 0.25
-            {
-                shares.push((
-                    c.label.clone(),
-                    share(nl[1]),
-                    share(off.regions[1].load),
-                    share(p.kernel.regions[1].load),
-                ));
-            }
+    for c in band_cases(&w, &r) {
+        let sol = solve_sweep_case(&w, &r, &c, &o).unwrap_or_else(|e| panic!("{}: {e}", c.label));
+        assert!(sol.wheel.converged, "{}", c.label);
+        band.push(line(c.label.clone(), &sol));
+        let p = &sol.patches[sol.main()];
+        let mut cfg = PipelineConfig::<f64>::recommended(0.3, SWEEP_SPEED);
+        assert!(cfg.stripes.interaction);
+        cfg.stripes.interaction = false;
+        let off = solve_patch(
+            &p.stripes_samples,
+            p.load,
+            &p.creepage,
+            &wrc_kernel::Material::steel(),
+            &cfg,
+            &mut ws,
+            &mut (),
+        )
+        .unwrap();
+        assert!(off.converged, "{}", c.label);
+        let nl = norm_region_loads(p);
+        let total = p.load;
+        let share = |x: f64| x / total;
+        // regions that correspond (tread, flange root): the uncoupled flange-root share within
+        // 25 points of NORM's (not e.g. a sliver beside one merged region)
+        if nl.len() == 2
+            && p.kernel.n_regions == 2
+            && off.n_regions == 2
+            && (share(off.regions[1].load) - share(nl[1])).abs() < 0.25
+        {
+            shares.push((
+                c.label.clone(),
+                share(nl[1]),
+                share(off.regions[1].load),
+                share(p.kernel.regions[1].load),
+            ));
         }
     }
     let ls: Vec<&Line> = band.iter().collect();
@@ -624,19 +625,8 @@ fn variants() {
             .collect(),
     ));
     let mut band = vec![];
-    for load in SWEEP_LOADS {
-        for k in 1..20 {
-            let c = sweep_case(
-                &w,
-                &r,
-                wrc_kernel::geometry::Side::Right,
-                1360.0,
-                4.0 + 0.05 * k as f64,
-                load,
-            )
-            .unwrap();
-            band.push((solve_sweep_case(&w, &r, &c, &o).unwrap(), steel));
-        }
+    for c in band_cases(&w, &r) {
+        band.push((solve_sweep_case(&w, &r, &c, &o).unwrap(), steel));
     }
     sets.push(("band", band));
     sets.push((

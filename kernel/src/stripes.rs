@@ -1036,14 +1036,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                 }
                 // soft zones: sample i takes (1 − s_i) of its zone's filter and s_i of the next's
                 for i in 0..n {
-                    let z = usize::from(self.zone[i]);
-                    let w = if z == k {
-                        T::ONE - self.sw[i]
-                    } else if z + 1 == k {
-                        self.sw[i]
-                    } else {
-                        T::ZERO
-                    };
+                    let w = self.zone_weight(i, k);
                     if w > T::ZERO {
                         self.bf[i] += w * self.eps[i];
                     }
@@ -1168,6 +1161,20 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         Ok((iterations, converged, passes))
     }
 
+    /// Soft zone weight ω_i(k) of sample `i` in basin `k`: 1 − s_i in its own zone, s_i in the
+    /// next one, 0 elsewhere (see `find_basins`).
+    #[inline]
+    fn zone_weight(&self, i: usize, k: usize) -> T {
+        let z = usize::from(self.zone[i]);
+        if z == k {
+            T::ONE - self.sw[i]
+        } else if z + 1 == k {
+            self.sw[i]
+        } else {
+            T::ZERO
+        }
+    }
+
     /// Link weight between basins `k` and `l`: 0 for the same basin, else the largest θ of the
     /// links between them (as in `assign_ref`).
     fn theta_between(&self, k: usize, l: usize) -> T {
@@ -1276,14 +1283,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             let mut num = T::ZERO;
             let mut den = T::ZERO;
             for i in 0..self.n {
-                let z = usize::from(self.zone[i]);
-                let w = if z == k {
-                    T::ONE - self.sw[i]
-                } else if z + 1 == k {
-                    self.sw[i]
-                } else {
-                    T::ZERO
-                };
+                let w = self.zone_weight(i, k);
                 let o = delta - self.z[i];
                 if w > T::ZERO && o > T::ZERO {
                     let wt = w * o * o * samples[i].dy;
