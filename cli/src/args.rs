@@ -1,4 +1,4 @@
-//! Command-line arguments (contract: shared/docs/cli.md).
+//! Command-line arguments (contract: docs/cli.md).
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde::Serialize;

@@ -1,4 +1,4 @@
-//! The JSON document of `wrc solve --json` (contract: shared/docs/cli.md). Field names and
+//! The JSON document of `wrc solve --json` (contract: docs/cli.md). Field names and
 //! meanings are fixed by the contract; add fields, never rename them.
 
 use serde::Serialize;

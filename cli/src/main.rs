@@ -1,4 +1,4 @@
-//! `wrc` — the command line of the wrc wheel–rail contact kernel (contract: shared/docs/cli.md).
+//! `wrc` — the command line of the wrc wheel–rail contact kernel (contract: docs/cli.md).
 
 mod args;
 mod doc;

@@ -6,8 +6,10 @@ use crate::args::{Flex, Normal, Side as ArgSide, SolveArgs, Tangential};
 use crate::doc::{Creepage as DocCreepage, Patch, Status};
 use crate::sink::PlotCell;
 use crate::timing::median_time_us;
-use std::path::{Path, PathBuf};
-use wrc_host_tests::profiles::{build_table, SmoothOptions};
+use std::path::Path;
+use wrc_host_tests::profiles::{
+    build_table, build_table_from_text, SmoothOptions, S1002_NAME, S1002_PRW, UIC60_NAME, UIC60_PRR,
+};
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
 use wrc_kernel::patch::{CellOut, CellSink, Creepage};
@@ -34,17 +36,25 @@ pub struct Solved {
     pub wear_strips: Vec<(f64, f64)>,
 }
 
-/// Default profile paths: the shipped Manchester S1002 / UIC60 pair.
-pub fn default_profiles() -> (PathBuf, PathBuf) {
-    (
-        wrc_host_tests::data::shared_file("profiles/MBench_S1002_v3.prw"),
-        wrc_host_tests::data::shared_file("profiles/MBench_UIC60_v3.prr"),
-    )
-}
-
-fn table<T: Real>(path: &Path, kind: ProfileKind) -> Result<Box<ProfileTable<T, NODES>>, String> {
-    build_table::<T, NODES>(path, Some(kind), &SmoothOptions::default())
-        .map_err(|e| format!("{}: {e}", path.display()))
+/// Builds the table of a profile: the file given on the command line, or the built-in Manchester
+/// S1002 wheel / UIC60 rail (`data/profiles/`, compiled into the binary so that `wrc` works from any
+/// directory and after `cargo install`).
+fn table<T: Real>(
+    path: Option<&Path>,
+    kind: ProfileKind,
+) -> Result<Box<ProfileTable<T, NODES>>, String> {
+    let opts = SmoothOptions::default();
+    match path {
+        Some(p) => build_table::<T, NODES>(p, Some(kind), &opts),
+        None => {
+            let (text, name) = match kind {
+                ProfileKind::Wheel => (S1002_PRW, S1002_NAME),
+                ProfileKind::Rail => (UIC60_PRR, UIC60_NAME),
+            };
+            build_table_from_text::<T, NODES>(text, Path::new(name), Some(kind), &opts)
+        }
+    }
+    .map_err(|e| e.to_string())
 }
 
 /// Per-patch statistics from the cells.
@@ -124,9 +134,8 @@ pub(crate) fn prepare<T: Real>(args: &SolveArgs) -> Result<Prepared<T>, String> 
     let cm = &args.common;
     let wr = &args.wr;
     let t = T::from_f64;
-    let (dw, dr) = default_profiles();
-    let wheel = table::<T>(wr.wheel.as_deref().unwrap_or(&dw), ProfileKind::Wheel)?;
-    let rail = table::<T>(wr.rail.as_deref().unwrap_or(&dr), ProfileKind::Rail)?;
+    let wheel = table::<T>(wr.wheel.as_deref(), ProfileKind::Wheel)?;
+    let rail = table::<T>(wr.rail.as_deref(), ProfileKind::Rail)?;
     let mut setup = TrackSetup::<T>::standard();
     setup.gauge = t(wr.gauge);
     setup.gauge_depth = t(wr.gauge_depth);

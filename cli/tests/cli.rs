@@ -1,4 +1,4 @@
-//! The `wrc` command line against its contract (shared/docs/cli.md): JSON fields, values that tie
+//! The `wrc` command line against its contract (docs/cli.md): JSON fields, values that tie
 //! back to the kernel's validated results, and one-line errors with a non-zero exit.
 
 use std::process::Command;
@@ -438,4 +438,31 @@ fn exact_tangential_wheel_rail_matches_the_library() {
         assert!(ft > 0.95 && ft <= 1.0 + 1e-9, "{ft}");
     }
     assert_eq!(d["status"]["converged"], true);
+}
+
+#[test]
+fn default_profiles_are_built_in_and_work_from_any_directory() {
+    // Outside the repository and with the data directory pointed at nothing: the default case still
+    // solves (S1002/UIC60 compiled into the binary), and the JSON is the one run from the repository.
+    let dir = std::env::temp_dir();
+    let o = Command::new(env!("CARGO_BIN_EXE_wrc"))
+        .args(["solve", "--json"])
+        .current_dir(&dir)
+        .env("WRC_DATA", dir.join("wrc-no-such-data-dir"))
+        .output()
+        .expect("wrc runs");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let away: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let here = json(&["solve", "--json"]);
+    assert_eq!(away["patches"], here["patches"]);
+    assert!(away["patches"][0]["fn_n"].as_f64().unwrap() > 0.0);
+}
+
+#[test]
+fn a_missing_profile_file_is_named_once() {
+    let o = wrc(&["solve", "--wheel", "/no/such/wheel.prw"]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert_eq!(e.matches("/no/such/wheel.prw").count(), 1, "{e}");
+    assert!(e.contains("cannot read"), "{e}");
 }

@@ -1,33 +1,88 @@
-//! Locating the project's shared data (`../shared/data` next to the repository).
+//! Locating the repository's `data/` directory at run time (profiles, coefficient tables, CONTACT
+//! reference extracts; see `data/README.md`).
+//!
+//! The directory is found when the program runs, never through a path frozen at build time, so a
+//! moved checkout or a shared target directory reads its own data: `$WRC_DATA` if set, else the first
+//! `data/` holding `README.md` found walking up from the current directory, then from the running
+//! executable's directory (`cargo test` and `cargo run` start inside the repository).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-/// The `shared/data` directory: `$WRC_SHARED_DATA` if set, else the first `shared/data` found
-/// beside the repository or beside one of its ancestors (`<repo>/../shared/data` in CI and in the
-/// main checkout; also found from git worktrees nested deeper).
-pub fn shared_data_dir() -> PathBuf {
-    if let Ok(p) = std::env::var("WRC_SHARED_DATA") {
-        return PathBuf::from(p);
+/// The environment variable that names the data directory explicitly.
+pub const DATA_ENV: &str = "WRC_DATA";
+
+/// The places searched, in order (for the error message of a missing file).
+fn candidates() -> Vec<PathBuf> {
+    let mut out = Vec::new();
+    if let Ok(p) = std::env::var(DATA_ENV) {
+        out.push(PathBuf::from(p));
+        return out;
     }
-    let manifest = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    for dir in manifest.ancestors().skip(1) {
-        let cand = dir.join("shared").join("data");
-        if cand.is_dir() {
-            return cand;
+    let mut starts = Vec::new();
+    if let Ok(cwd) = std::env::current_dir() {
+        starts.push(cwd);
+    }
+    if let Ok(exe) = std::env::current_exe() {
+        if let Some(dir) = exe.parent() {
+            starts.push(dir.to_path_buf());
         }
     }
-    manifest.join("..").join("..").join("shared").join("data")
+    for start in starts {
+        for dir in start.ancestors() {
+            out.push(dir.join("data"));
+        }
+    }
+    out
 }
 
-/// Path of a file below `shared/data`.
-pub fn shared_file(rel: &str) -> PathBuf {
-    shared_data_dir().join(rel)
+fn is_data_dir(dir: &Path) -> bool {
+    dir.join("README.md").is_file() && dir.join("profiles").is_dir()
+}
+
+/// The data directory, or an error that says where it was looked for and how to point at it.
+pub fn try_data_dir() -> Result<PathBuf, String> {
+    let cands = candidates();
+    if let Ok(p) = std::env::var(DATA_ENV) {
+        let p = PathBuf::from(p);
+        return if p.is_dir() {
+            Ok(p)
+        } else {
+            Err(format!("{DATA_ENV}={} is not a directory", p.display()))
+        };
+    }
+    cands.iter().find(|d| is_data_dir(d)).cloned().ok_or_else(|| {
+        format!(
+            "wrc's data directory was not found: looked for data/README.md upwards from the current \
+             directory and from the executable's directory; run from inside the repository or set \
+             {DATA_ENV}=<repository>/data"
+        )
+    })
+}
+
+/// The data directory. Panics with [`try_data_dir`]'s message when it is not found (test and study
+/// code; the `wrc` tool has its defaults built in).
+pub fn data_dir() -> PathBuf {
+    try_data_dir().unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// Path of a file below the data directory; panics naming the file, the place looked in and
+/// [`DATA_ENV`] when it does not exist.
+pub fn data_file(rel: &str) -> PathBuf {
+    let p = data_dir().join(rel);
+    if !p.is_file() {
+        panic!(
+            "data file {rel} not found at {}; set {DATA_ENV}=<repository>/data to point at another copy",
+            p.display()
+        );
+    }
+    p
 }
 
 #[cfg(test)]
 mod tests {
     #[test]
-    fn shared_data_is_present() {
-        assert!(super::shared_file("kalker_coefficients.csv").is_file());
+    fn data_is_found_at_run_time() {
+        assert!(super::data_file("kalker_coefficients.csv").is_file());
+        assert!(super::data_file("profiles/MBench_S1002_v3.prw").is_file());
     }
 }

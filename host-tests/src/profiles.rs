@@ -91,13 +91,23 @@ pub fn read_profile(path: &Path, kind: Option<ProfileKind>) -> Result<RawProfile
         path: path.to_path_buf(),
         message: e.to_string(),
     })?;
+    parse_profile(&text, path, kind)
+}
+
+/// Parses a profile from its text; `path` names it in errors and its extension selects the format
+/// as in [`read_profile`].
+pub fn parse_profile(
+    text: &str,
+    path: &Path,
+    kind: Option<ProfileKind>,
+) -> Result<RawProfile, ProfileError> {
     let ext = path
         .extension()
         .and_then(|e| e.to_str())
         .unwrap_or("")
         .to_ascii_lowercase();
     if ext == "prr" || ext == "prw" {
-        let raw = parse_simpack(&text, path)?;
+        let raw = parse_simpack(text, path)?;
         if let Some(k) = kind {
             if k != raw.kind {
                 return Err(ProfileError::File {
@@ -112,7 +122,7 @@ pub fn read_profile(path: &Path, kind: Option<ProfileKind>) -> Result<RawProfile
             path: path.to_path_buf(),
             cause: "plain two-column file: profile kind (rail/wheel) must be given".into(),
         })?;
-        parse_two_column(&text, path, kind)
+        parse_two_column(text, path, kind)
     }
 }
 
@@ -215,7 +225,7 @@ pub fn parse_two_column(
     })
 }
 
-/// SIMPACK `.prr`/`.prw` (version 1) as described in `shared/data/profiles/PROFILES.md`.
+/// SIMPACK `.prr`/`.prw` (version 1) as described in `data/profiles/PROFILES.md`.
 pub fn parse_simpack(text: &str, path: &Path) -> Result<RawProfile, ProfileError> {
     #[derive(PartialEq)]
     enum Sec {
@@ -822,6 +832,26 @@ pub fn build_table<T: wrc_kernel::Real, const N: usize>(
     opts: &SmoothOptions,
 ) -> Result<Box<ProfileTable<T, N>>, ProfileError> {
     let raw = read_profile(path, kind)?;
+    table_from_raw(raw, path, opts)
+}
+
+/// Builds a kernel table from a profile's text (full pipeline); `path` names it in errors and its
+/// extension selects the format as in [`read_profile`].
+pub fn build_table_from_text<T: wrc_kernel::Real, const N: usize>(
+    text: &str,
+    path: &Path,
+    kind: Option<ProfileKind>,
+    opts: &SmoothOptions,
+) -> Result<Box<ProfileTable<T, N>>, ProfileError> {
+    let raw = parse_profile(text, path, kind)?;
+    table_from_raw(raw, path, opts)
+}
+
+fn table_from_raw<T: wrc_kernel::Real, const N: usize>(
+    raw: RawProfile,
+    path: &Path,
+    opts: &SmoothOptions,
+) -> Result<Box<ProfileTable<T, N>>, ProfileError> {
     let fine = preprocess(&raw, opts)?;
     table_from_fine(&fine, raw.kind, opts).map_err(|e| match e {
         ProfileError::File { cause, .. } => ProfileError::File {
@@ -838,18 +868,27 @@ pub type ManchesterTable<T> = ProfileTable<T, 2048>;
 /// (wheel, rail) tables of [`manchester_tables`].
 pub type ManchesterPair<T> = (Box<ManchesterTable<T>>, Box<ManchesterTable<T>>);
 
-/// The shipped Manchester profiles (`shared/data/profiles/`), default preprocessing, capacity
+/// The Manchester S1002 wheel profile, built into the binary (`data/profiles/MBench_S1002_v3.prw`).
+pub const S1002_PRW: &str = include_str!("../../data/profiles/MBench_S1002_v3.prw");
+/// The Manchester UIC60 rail profile, built into the binary (`data/profiles/MBench_UIC60_v3.prr`).
+pub const UIC60_PRR: &str = include_str!("../../data/profiles/MBench_UIC60_v3.prr");
+/// File name under which [`S1002_PRW`] is reported.
+pub const S1002_NAME: &str = "MBench_S1002_v3.prw";
+/// File name under which [`UIC60_PRR`] is reported.
+pub const UIC60_NAME: &str = "MBench_UIC60_v3.prr";
+
+/// The shipped Manchester profiles (`data/profiles/`), default preprocessing, capacity
 /// 2048 nodes at ds = 0.1 mm: `(wheel S1002, rail UIC60 pre-canted 1:40)`.
 pub fn manchester_tables<T: wrc_kernel::Real>(
     opts: &SmoothOptions,
 ) -> Result<ManchesterPair<T>, ProfileError> {
     let w = build_table::<T, 2048>(
-        &crate::data::shared_file("profiles/MBench_S1002_v3.prw"),
+        &crate::data::data_file("profiles/MBench_S1002_v3.prw"),
         Some(ProfileKind::Wheel),
         opts,
     )?;
     let r = build_table::<T, 2048>(
-        &crate::data::shared_file("profiles/MBench_UIC60_v3.prr"),
+        &crate::data::data_file("profiles/MBench_UIC60_v3.prr"),
         Some(ProfileKind::Rail),
         opts,
     )?;

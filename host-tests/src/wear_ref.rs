@@ -10,7 +10,7 @@
 //! by condition, never by label (methods.md §8 notes a label conflict with `wear_map.md`):
 //! seizure p > 0.8H; otherwise mild below 0.2 m/s, severe for 0.2 ≤ v_s ≤ 0.7 m/s, mild above
 //! 0.7 m/s. Defaults are the range mid-points (5.5e-4, 35e-4, 5.5e-4, 350e-4), H = 2625 MPa (seed A).
-//! The values are [UNCERTAIN] (`shared/data/wear_map.md`); the map is an input.
+//! The values are [UNCERTAIN] (`data/wear_map.md`); the map is an input.
 
 use crate::tang::{ElementState, TangSolution};
 

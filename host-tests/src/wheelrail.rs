@@ -44,7 +44,7 @@
 //! [`PatchCase::stripes_samples`] the kernel's own STRIPES input (to rerun other pipeline
 //! configurations on exactly the kernel's samples).
 
-use crate::data::shared_file;
+use crate::data::data_file;
 use crate::norm::{self, Control, Grid, NormSolution};
 use crate::profiles::{self, SmoothOptions};
 use std::path::Path;
@@ -353,7 +353,7 @@ pub fn mbench_material() -> Material<f64> {
 
 /// Reads the 42 rows of `contact_reference/mbench_a22_exact.csv`.
 pub fn mbench_rows() -> std::io::Result<Vec<MbenchRow>> {
-    mbench_rows_from(&shared_file("contact_reference/mbench_a22_exact.csv"))
+    mbench_rows_from(&data_file("contact_reference/mbench_a22_exact.csv"))
 }
 
 /// Reads rows from a CSV file of the same layout (comment lines start with `#`).

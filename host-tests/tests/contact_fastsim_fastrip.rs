@@ -6,7 +6,7 @@
 //! |ΔM_z|/|M_z| ≤ 5e-4 (≈ 1 unit of the 4th digit), which implies the tolerances.
 
 use wrc_host_tests::cases::{a8b4, contact_material, VecSink};
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::table::Table;
 use wrc_kernel::fastrip::{fastrip, FastripSettings, LambdaVariant};
 use wrc_kernel::fastsim::{fastsim, FastsimSettings};
@@ -131,7 +131,7 @@ fn check(label: &str, g: &Got, fy_rel: f64, mz: f64) {
 /// Every row of `fastsim_hertz_a8_b4.csv` except CONTACT's exact solution (case 1, TANG's job).
 #[test]
 fn contact_reference_csv() {
-    let t = Table::read(&shared_file("contact_reference/fastsim_hertz_a8_b4.csv"));
+    let t = Table::read(&data_file("contact_reference/fastsim_hertz_a8_b4.csv"));
     let mut n_rows = 0;
     for r in 0..t.rows.len() {
         let method = t.str(r, "method").to_string();

@@ -2,7 +2,7 @@
 //! §10.7), each case in f64 and f32 (forces within 1e-4 relative of each other).
 
 use wrc_host_tests::cases::{contact_material, VecSink};
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::table::Table;
 use wrc_kernel::fastrip::{fastrip, FastripSettings, LambdaVariant};
 use wrc_kernel::fastsim::{fastsim, FastsimSettings};
@@ -353,7 +353,7 @@ fn tractcurv<T: Real, const S: usize, const C: usize>(xi: f64) -> [f64; 4] {
 /// to 4 digits, asserted within 2e-4 of F_x/(μN).
 #[test]
 fn tractcurv_creep_curve() {
-    let t = Table::read(&shared_file("contact_reference/tractcurv_eurosprinter.csv"));
+    let t = Table::read(&data_file("contact_reference/tractcurv_eurosprinter.csv"));
     let mut rows = 0;
     for r in 0..t.rows.len() {
         if t.str(r, "curve") != "fastsim_parabolic" {

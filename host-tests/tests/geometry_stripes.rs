@@ -5,7 +5,7 @@
 //! (≤ 20 % against the exact solution, methods.md §10.11) of CONTACT's, with both
 //! correspondences (contact-plane projection and isosceles pairs).
 
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::profiles::{self, SmoothOptions};
 use wrc_kernel::geometry::*;
 use wrc_kernel::pipeline::samples_from_arrays;
@@ -16,7 +16,7 @@ use wrc_kernel::Material;
 fn manchester_patches_feed_stripes() {
     let (w, r) = profiles::manchester_tables::<f64>(&SmoothOptions::default()).unwrap();
     let text =
-        std::fs::read_to_string(shared_file("contact_reference/mbench_a22_exact.csv")).unwrap();
+        std::fs::read_to_string(data_file("contact_reference/mbench_a22_exact.csv")).unwrap();
     let mut lines = text.lines().filter(|l| !l.starts_with('#'));
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = |n: &str| head.iter().position(|h| *h == n).unwrap();

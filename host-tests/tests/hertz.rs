@@ -1,7 +1,7 @@
-//! Hertz theory (methods.md §1.3, §10.1) against `shared/data/hertz_coefficients*.csv`, closed-form
+//! Hertz theory (methods.md §1.3, §10.1) against `data/hertz_coefficients*.csv`, closed-form
 //! identities and CONTACT's printed values.
 
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::table::Table;
 use wrc_kernel::hertz::{self, HertzSolution};
 use wrc_kernel::{Error, Material};
@@ -14,7 +14,7 @@ fn rel(x: f64, y: f64) -> f64 {
 /// ≤ 0.3 %, we assert 1e-4 (the printing precision) and report the maximum.
 #[test]
 fn coefficients_vs_theta_csv() {
-    let t = Table::read(&shared_file("hertz_coefficients.csv"));
+    let t = Table::read(&data_file("hertz_coefficients.csv"));
     let mut worst: f64 = 0.0;
     for i in 0..t.rows.len() {
         let th = t.f64(i, "theta_deg").unwrap().to_radians();
@@ -58,7 +58,7 @@ fn coefficients_vs_theta_csv() {
 
 #[test]
 fn coefficients_vs_axis_ratio_csv() {
-    let t = Table::read(&shared_file("hertz_coefficients_vs_axis_ratio.csv"));
+    let t = Table::read(&data_file("hertz_coefficients_vs_axis_ratio.csv"));
     for i in 0..t.rows.len() {
         let g = t.f64(i, "b_over_a").unwrap();
         let rho = 1.0 / t.f64(i, "B_over_A").unwrap();

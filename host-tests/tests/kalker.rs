@@ -1,13 +1,13 @@
 //! Kalker creepage coefficients (methods.md §2, §10.2).
 
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::table::Table;
 use wrc_kernel::kalker::{self, RatioKind, KALKER_TABLE};
 
 /// The const table equals `kalker_coefficients.csv` value for value.
 #[test]
 fn const_table_equals_csv() {
-    let t = Table::read(&shared_file("kalker_coefficients.csv"));
+    let t = Table::read(&data_file("kalker_coefficients.csv"));
     assert_eq!(t.rows.len(), KALKER_TABLE.len());
     let cols = [
         "C11_nu0",

@@ -2,7 +2,7 @@
 //! smoothing on the Manchester profiles.
 
 use std::path::{Path, PathBuf};
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::profiles::{self, ProfileError, SmoothOptions};
 use wrc_kernel::profile::ProfileKind;
 
@@ -92,12 +92,12 @@ fn reader_errors_name_line_and_cause() {
 /// capacity, and the geometry of the tables (tape circle, flange height, rail top).
 #[test]
 fn manchester_files_and_tables() {
-    let w = profiles::read_profile(&shared_file("profiles/MBench_S1002_v3.prw"), None).unwrap();
+    let w = profiles::read_profile(&data_file("profiles/MBench_S1002_v3.prw"), None).unwrap();
     assert_eq!(w.kind, ProfileKind::Wheel);
     assert_eq!(w.points.len(), 399);
     // mirror.y = 1 and inversion = 1 applied: flange at negative y, field side last
     assert!((w.points[0].0 - 60.0).abs() < 1e-9 && (w.points[398].0 + 69.612628).abs() < 1e-6);
-    let r = profiles::read_profile(&shared_file("profiles/MBench_UIC60_v3.prr"), None).unwrap();
+    let r = profiles::read_profile(&data_file("profiles/MBench_UIC60_v3.prr"), None).unwrap();
     assert_eq!(r.kind, ProfileKind::Rail);
     assert_eq!(r.points.len(), 495);
     let (wt, rt) = profiles::manchester_tables::<f64>(&SmoothOptions::default()).unwrap();

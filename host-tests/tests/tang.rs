@@ -1,12 +1,12 @@
 //! Validation of the TANG steady-rolling reference (methods.md §9.2) against closed forms
 //! (Carter §10.6, Kalker's linear theory §10.3, full slip §10.7) and CONTACT's exact results
-//! (`shared/data/contact_reference/`, §10.4).
+//! (`data/contact_reference/`, §10.4).
 //!
 //! Heavier convergence checks are `#[ignore]`d; run them with
 //! `cargo test -p wrc-host-tests --release --test tang -- --ignored --nocapture`.
 
 use std::f64::consts::PI;
-use wrc_host_tests::data::shared_file;
+use wrc_host_tests::data::data_file;
 use wrc_host_tests::tang::*;
 use wrc_host_tests::wear_ref::{strip_wear, WearMap};
 
@@ -193,7 +193,7 @@ fn full_slip_saturates_at_mu_fn() {
 
 /// Parse a CONTACT reference CSV (comment lines start with '#').
 fn read_csv(rel: &str) -> Vec<std::collections::HashMap<String, String>> {
-    let text = std::fs::read_to_string(shared_file(rel)).expect("reference file");
+    let text = std::fs::read_to_string(data_file(rel)).expect("reference file");
     let mut lines = text.lines().filter(|l| !l.starts_with('#'));
     let head: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
     lines

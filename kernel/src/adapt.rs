@@ -36,7 +36,7 @@ use crate::patch::{
 use crate::stripes::StripSet;
 use crate::{Material, Real};
 
-/// Kik–Piotrowski β(L/W) (methods.md §5.1, [UNCERTAIN]: the seed's empirical function is unknown).
+/// Kik–Piotrowski β(L/W) (methods.md §5.1, \[UNCERTAIN\]: the seed's empirical function is unknown).
 #[derive(Clone, Copy, Debug)]
 pub enum KpBeta<T> {
     /// β = L/W (CONTACT's `equiv_ellipse`; default).

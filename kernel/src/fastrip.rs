@@ -15,7 +15,7 @@
 //! directly (StripTheory: κd = X/(1−ν), λ'd = η*/(1−ν)), so vanishing creepage has no 0/0 and f32
 //! keeps full accuracy in the linear limit.
 //!
-//! Choices (methods.md [UNCERTAIN] items, documented and selectable):
+//! Choices (methods.md \[UNCERTAIN\] items, documented and selectable):
 //! * [`LambdaVariant::StripTheory`] (default, §4.4 derivation) or [`LambdaVariant::ContactCompat`]
 //!   (CONTACT M=5/M=6: d instead of (1−ν)d in the spin term, then normalised to κ² + λ² = 1).
 //! * [`SpinInX::Linear`] (default), [`SpinInX::RigidSlip`] or [`SpinInX::Lateral`] (published,

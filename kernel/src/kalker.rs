@@ -1,11 +1,11 @@
 //! Kalker's creepage coefficients C11, C22, C23, C33 (methods.md §2).
 //!
-//! The table [`KALKER_TABLE`] is `shared/data/kalker_coefficients.csv` transcribed (a host test reads
+//! The table [`KALKER_TABLE`] is `data/kalker_coefficients.csv` transcribed (a host test reads
 //! the CSV and asserts equality). [`coefficients`] applies CONTACT's `linrol` rule exactly: linear
 //! interpolation in g = min(a/b, b/a) within the table of its case, quadratic Lagrange interpolation
 //! of 1/C in ν through ν = 0, ¼, ½, and Kalker's asymptotes for g < 0.101.
 //!
-//! C33 (single source, **[UNCERTAIN]** to the last digit) uses the same table rule; below the table it
+//! C33 (single source, **\[UNCERTAIN\]** to the last digit) uses the same table rule; below the table it
 //! uses π²/(16(1−ν)g) for a/b → 0 and holds the b/a = 0.1 row for b/a → 0 (methods.md §2 item 4).
 
 use crate::error::{check_finite, check_positive, Error};
@@ -181,7 +181,7 @@ pub struct KalkerCoefficients<T> {
     pub c22: T,
     /// C23 = −C32 (lateral force from spin, spin moment from lateral creepage).
     pub c23: T,
-    /// C33 (spin moment from spin) — **[UNCERTAIN]** single-source table.
+    /// C33 (spin moment from spin) — **\[UNCERTAIN\]** single-source table.
     pub c33: T,
 }
 

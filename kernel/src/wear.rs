@@ -8,7 +8,7 @@
 //!
 //! The wear coefficient k comes from the KTH map, a step function of pressure and sliding velocity
 //! v_s = V|s| (converted to m/s). Regions are implemented by condition, not by label, because the
-//! labels differ between seed A and `shared/data/wear_map.md` (methods.md §8):
+//! labels differ between seed A and `data/wear_map.md` (methods.md §8):
 //!
 //! | region | condition | default k (range mid-point) |
 //! |---|---|---|
@@ -17,7 +17,7 @@
 //! | [`WearRegion::MildHighSlip`] | p ≤ 0.8H, v_s > 0.7 m/s | 5.5e-4 |
 //! | [`WearRegion::Seizure`] | p > 0.8H | 350e-4 |
 //!
-//! The values are **[UNCERTAIN]** (recollection, not checked against Jendel; `wear_map.md`); the map is
+//! The values are **\[UNCERTAIN\]** (recollection, not checked against Jendel; `wear_map.md`); the map is
 //! therefore a plain table input ([`WearMap`]) and absolute wear only scales with it.
 
 use crate::error::{check_finite, check_positive, Error};

@@ -1,4 +1,4 @@
-//! Deterministic cost meters under QEMU (see shared/docs/embedded.md §1 and §3).
+//! Deterministic cost meters under QEMU (see docs/embedded.md §1 and §3).
 //!
 //! * Instructions: the CMSDK APB TIMER0 of mps2-an386/an500, a 32-bit down-counter at 25 MHz.
 //!   With QEMU's `-icount shift=10,align=off,sleep=off` the virtual clock advances 1024 ns per guest

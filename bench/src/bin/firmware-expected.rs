@@ -1,7 +1,7 @@
 //! Writes `bench/firmware/src/expected.rs`: the host's results of every on-target test case, in
 //! `f32` and `f64`, bit-exact (`from_bits`), for the QEMU firmware to compare against; and
 //! `bench/firmware/src/profiles.rs`: the S1002 wheel and UIC60 rail tables (host preprocessing of
-//! `shared/data/profiles/`) as const data in both precisions, bit-exact copies of the tables the
+//! `data/profiles/`) as const data in both precisions, bit-exact copies of the tables the
 //! host used for the wheel cases.
 //!
 //! Usage: `cargo run -p wrc-bench --release --bin firmware-expected [OUTPUT]` (default output:

@@ -51,7 +51,7 @@
 //! body-of-revolution formula cos δ/(2R) without the small yaw correction. The longitudinal
 //! position of each sample's rigid contact (the lowest wheel point) is reported as `x_c(s)`
 //! relative to `x_ref`, so a solver can shift its strips (h ≈ f_n + A (x − x_c)² − δ); the
-//! remaining yaw asymmetry of the gap in x (An et al. [33]) is not modelled.
+//! remaining yaw asymmetry of the gap in x (An et al., ref. 33) is not modelled.
 
 use super::isosceles;
 use super::placement::WheelRail;

@@ -910,7 +910,7 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
 
     /// Storage for a placement that is filled later by [`Self::place_in`] (or
     /// [`Self::reposition`] after a first `place_in`): a `const fn`, so it can initialise a
-    /// `static` or a long-lived workspace and the ≈ 5·M·size_of::<T>() bytes of the gap grid are
+    /// `static` or a long-lived workspace and the ≈ 5·M·`size_of::<T>()` bytes of the gap grid are
     /// never returned by value. It holds no valid grid (`n = 0`: [`contact_patches`] answers
     /// `NoContact`).
     ///
