@@ -11,28 +11,19 @@ use std::path::{Path, PathBuf};
 /// The environment variable that names the data directory explicitly.
 pub const DATA_ENV: &str = "WRC_DATA";
 
-/// The places searched, in order (for the error message of a missing file).
-fn candidates() -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    if let Ok(p) = std::env::var(DATA_ENV) {
-        out.push(PathBuf::from(p));
-        return out;
-    }
-    let mut starts = Vec::new();
-    if let Ok(cwd) = std::env::current_dir() {
-        starts.push(cwd);
-    }
-    if let Ok(exe) = std::env::current_exe() {
-        if let Some(dir) = exe.parent() {
-            starts.push(dir.to_path_buf());
-        }
-    }
-    for start in starts {
-        for dir in start.ancestors() {
-            out.push(dir.join("data"));
-        }
-    }
-    out
+/// The `data/` directories searched when [`DATA_ENV`] is unset, in order: upwards from the current
+/// directory, then upwards from the running executable's directory.
+fn candidates() -> impl Iterator<Item = PathBuf> {
+    let cwd = std::env::current_dir().ok();
+    let exe_dir = std::env::current_exe()
+        .ok()
+        .and_then(|e| e.parent().map(Path::to_path_buf));
+    cwd.into_iter().chain(exe_dir).flat_map(|start| {
+        start
+            .ancestors()
+            .map(|d| d.join("data"))
+            .collect::<Vec<_>>()
+    })
 }
 
 fn is_data_dir(dir: &Path) -> bool {
@@ -41,7 +32,6 @@ fn is_data_dir(dir: &Path) -> bool {
 
 /// The data directory, or an error that says where it was looked for and how to point at it.
 pub fn try_data_dir() -> Result<PathBuf, String> {
-    let cands = candidates();
     if let Ok(p) = std::env::var(DATA_ENV) {
         let p = PathBuf::from(p);
         return if p.is_dir() {
@@ -50,7 +40,7 @@ pub fn try_data_dir() -> Result<PathBuf, String> {
             Err(format!("{DATA_ENV}={} is not a directory", p.display()))
         };
     }
-    cands.iter().find(|d| is_data_dir(d)).cloned().ok_or_else(|| {
+    candidates().find(|d| is_data_dir(d)).ok_or_else(|| {
         format!(
             "wrc's data directory was not found: looked for data/README.md upwards from the current \
              directory and from the executable's directory; run from inside the repository or set \

@@ -877,18 +877,21 @@ pub const S1002_NAME: &str = "MBench_S1002_v3.prw";
 /// File name under which [`UIC60_PRR`] is reported.
 pub const UIC60_NAME: &str = "MBench_UIC60_v3.prr";
 
-/// The shipped Manchester profiles (`data/profiles/`), default preprocessing, capacity
-/// 2048 nodes at ds = 0.1 mm: `(wheel S1002, rail UIC60 pre-canted 1:40)`.
+/// The shipped Manchester profiles (the built-in [`S1002_PRW`] and [`UIC60_PRR`] of
+/// `data/profiles/`), default preprocessing, capacity 2048 nodes at ds = 0.1 mm:
+/// `(wheel S1002, rail UIC60 pre-canted 1:40)`.
 pub fn manchester_tables<T: wrc_kernel::Real>(
     opts: &SmoothOptions,
 ) -> Result<ManchesterPair<T>, ProfileError> {
-    let w = build_table::<T, 2048>(
-        &crate::data::data_file("profiles/MBench_S1002_v3.prw"),
+    let w = build_table_from_text::<T, 2048>(
+        S1002_PRW,
+        Path::new(S1002_NAME),
         Some(ProfileKind::Wheel),
         opts,
     )?;
-    let r = build_table::<T, 2048>(
-        &crate::data::data_file("profiles/MBench_UIC60_v3.prr"),
+    let r = build_table_from_text::<T, 2048>(
+        UIC60_PRR,
+        Path::new(UIC60_NAME),
         Some(ProfileKind::Rail),
         opts,
     )?;
