@@ -19,6 +19,9 @@ pub enum Error {
     TooManyRegions,
     /// A profile table is malformed (too few points, non-monotone lateral coordinate, …).
     BadProfile(&'static str),
+    /// A contact table's bytes are wrong, truncated or damaged ([`crate::table`]); the payload
+    /// names the check that failed.
+    BadTable(&'static str),
 }
 
 impl core::fmt::Display for Error {
@@ -31,6 +34,7 @@ impl core::fmt::Display for Error {
             Error::NoContact => write!(f, "no contact: wheel and rail do not touch"),
             Error::TooManyRegions => write!(f, "more contact regions than the capacity"),
             Error::BadProfile(w) => write!(f, "bad profile: {w}"),
+            Error::BadTable(w) => write!(f, "bad contact table: {w}"),
         }
     }
 }

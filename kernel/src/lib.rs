@@ -25,7 +25,9 @@ pub mod patch;
 pub mod pipeline;
 pub mod profile;
 pub mod real;
+pub mod step;
 pub mod stripes;
+pub mod table;
 pub mod wear;
 pub mod wheel;
 

@@ -44,6 +44,13 @@ pub trait Real:
     /// Smallest positive normal value.
     const MIN_POSITIVE: Self;
 
+    /// Size in bytes (4 for `f32`, 8 for `f64`).
+    const BYTES: usize;
+
+    /// Writes the little-endian bytes into `out[..Self::BYTES]` (shorter `out`: nothing written).
+    fn write_le(self, out: &mut [u8]);
+    /// Reads from the little-endian bytes `b[..Self::BYTES]` (shorter `b`: 0).
+    fn read_le(b: &[u8]) -> Self;
     /// Conversion from `f64` (rounds for `f32`).
     fn from_f64(x: f64) -> Self;
     /// Conversion to `f64` (exact).
@@ -141,6 +148,24 @@ macro_rules! impl_real {
             const EPSILON: Self = <$t>::EPSILON;
             const MAX: Self = <$t>::MAX;
             const MIN_POSITIVE: Self = <$t>::MIN_POSITIVE;
+            const BYTES: usize = core::mem::size_of::<$t>();
+            #[inline(always)]
+            fn write_le(self, out: &mut [u8]) {
+                if let Some(d) = out.get_mut(..Self::BYTES) {
+                    d.copy_from_slice(&self.to_le_bytes());
+                }
+            }
+            #[inline(always)]
+            fn read_le(b: &[u8]) -> Self {
+                let mut w = [0u8; core::mem::size_of::<$t>()];
+                match b.get(..Self::BYTES) {
+                    Some(s) => {
+                        w.copy_from_slice(s);
+                        <$t>::from_le_bytes(w)
+                    }
+                    None => 0.0,
+                }
+            }
             #[inline(always)]
             fn from_f64(x: f64) -> Self {
                 x as $t

@@ -416,6 +416,49 @@ impl<
     }
 }
 
+/// Re-runs the per-patch pipeline (forces only, creepages of `cfg`) on patch `k` of the geometry
+/// that the last [`solve_wheel`] call with this workspace left in `ws.patches`, at normal load
+/// `load` (N): afterwards `ws.pipeline.set` holds that patch's STRIPES strips (the contact
+/// tables of [`crate::table`] resample them). The same computation as the call's own final
+/// solve of that patch, so the same strips.
+///
+/// Errors: `OutOfRange("patch")` for `k` beyond the patches of the last call, otherwise those of
+/// [`solve_patch_forces`].
+pub fn resolve_patch_strips<
+    T: Real,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    k: usize,
+    load: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+) -> Result<PatchResult<T, NR>, Error> {
+    if k >= ws.patches.len.min(K) {
+        return Err(Error::OutOfRange("patch"));
+    }
+    let n = samples_of(&ws.patches, k, &mut ws.samples);
+    let cr = cfg.creepage.unwrap_or(Creepage {
+        xi: T::ZERO,
+        eta: T::ZERO,
+        phi: T::ZERO,
+    });
+    solve_patch_forces(
+        &ws.samples[..n],
+        load,
+        &cr,
+        mat,
+        &cfg.pipeline,
+        &mut ws.pipeline,
+    )
+}
+
 /// Fills `out` with the STRIPES samples of patch `k`; returns the count.
 fn samples_of<T: Real, const K: usize, const NP: usize>(
     ps: &Patches<T, K, NP>,

@@ -101,12 +101,27 @@ pub fn creepages<T: Real, const N: usize, const M: usize>(
     frame: &PatchFrame<T>,
     kin: &Kinematics<T>,
 ) -> Result<Creepages<T>, Error> {
+    creepages_at(&geom.pose, geom.side, geom.wheel.cz, frame, kin)
+}
+
+/// [`creepages`] from the parts of the placed pair it uses: the wheelset `pose`, the analysed
+/// `side`, the wheel centre height `wheel_cz` of the touching position (mm, track frame; the
+/// loaded centre is `wheel_cz` − `frame.approach_vertical`) and the patch `frame` (for the
+/// real-time step, whose frames come from a contact table).
+///
+/// Errors: as [`creepages`].
+pub fn creepages_at<T: Real>(
+    pose: &super::placement::WheelsetPose<T>,
+    side: Side,
+    wheel_cz: T,
+    frame: &PatchFrame<T>,
+    kin: &Kinematics<T>,
+) -> Result<Creepages<T>, Error> {
     crate::error::check_positive(kin.speed, "speed")?;
     crate::error::check_finite(kin.pitch_rate, "pitch_rate")?;
     crate::error::check_finite(kin.lateral_velocity, "lateral_velocity")?;
     crate::error::check_finite(kin.yaw_rate, "yaw_rate")?;
     crate::error::check_finite(kin.roll_rate, "roll_rate")?;
-    let pose = geom.pose;
     let (cpsi, spsi) = (math::cos(pose.yaw), math::sin(pose.yaw));
     let (cphi, sphi) = (math::cos(pose.roll), math::sin(pose.roll));
     let axle = [-spsi * cphi, cpsi * cphi, sphi];
@@ -116,13 +131,13 @@ pub fn creepages<T: Real, const N: usize, const M: usize>(
         kin.pitch_rate * axle[2] + kin.yaw_rate,
     ];
     // wheelset centre in T at the loaded position
-    let centre = [T::ZERO, pose.dy, geom.wheel.cz - frame.approach_vertical];
+    let centre = [T::ZERO, pose.dy, wheel_cz - frame.approach_vertical];
     let p = [frame.x_ref, frame.y_ref_track, frame.z_ref_track];
     let r = [p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]];
     let wr = cross(omega, r);
     let v = [kin.speed + wr[0], kin.lateral_velocity + wr[1], wr[2]];
     let (sd, cd) = (math::sin(frame.angle), math::cos(frame.angle));
-    let n = match geom.side {
+    let n = match side {
         Side::Left => [T::ZERO, -sd, cd],
         Side::Right => [T::ZERO, sd, cd],
     };

@@ -31,7 +31,7 @@ pub mod isosceles;
 pub mod patch;
 pub mod placement;
 
-pub use creep::{creepages, creepages_seed_a, Creepages, Kinematics, Normalisation};
+pub use creep::{creepages, creepages_at, creepages_seed_a, Creepages, Kinematics, Normalisation};
 pub use isosceles::{isosceles_rigid_pair, IsoscelesPair};
 pub use patch::{
     contact_patches, patches_at_normal_approach, sample_patch, Correspondence, Patch, PatchFrame,

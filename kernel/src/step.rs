@@ -1,0 +1,310 @@
+//! The real-time per-wheel step: one wheel's contact from a contact table ([`crate::table`]) at a
+//! fixed cost — no data-dependent iteration anywhere.
+//!
+//! Per call, top-down:
+//! 1. **Cell of the table**: the shift `pose.dy` and the load locate one table cell (linear in dy,
+//!    linear in ln F); a shift or load outside the table is `OutOfRange`, never extrapolated.
+//! 2. **Vertical balance** (fixed [`BALANCE_STEPS`] steps): the table's load coordinate F (the
+//!    load at which Σ_k N_k cos δ_k = F) solves F · Σ_k s_k(F)(cos δ_k(F) + r_k e_k(F)) = F_z,
+//!    s_k = N_k/F the slot's load share, e_k = ∓ sin δ_k (right/left wheel) the vertical
+//!    component of the lateral axis and r_k = F_y,k/N_k the creep-force ratio of the previous
+//!    round (0 in the first). The shares depend weakly on F, so the fixed-point steps
+//!    F ← F_z/Σ(…) converge fast (contraction |d ln Σ/d ln F| ≪ 1).
+//! 3. **Slots at F**: every slot's frame, load N_k = s_k F, pmax, area and its `ST` strips
+//!    (a_j, p̂_j scaled by F^{1/3}, p̂ rescaled so the strips carry N_k exactly, Kalker's
+//!    C_ij at the local ellipse n_j/m_j: Ayasse–Chollet).
+//! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_at`]).
+//! 5. **FaStrip forces per strip in closed form** ([`strip_forces`]).
+//! 6. Steps 2–5 are repeated [`ROUNDS`] times (the normal–tangential coupling through r_k).
+//!
+//! Every loop runs over the table's slots and strips and the fixed counts above; the cost
+//! depends on the data only through the number of loaded strips (an empty strip is skipped).
+//!
+//! What it neglects against [`crate::wheel::solve_wheel`] (its table was built by it): the
+//! geometry's dependence on yaw and on a roll that differs from the table's (the creepages use
+//! the actual pose), the cell grid of FaStrip (closed form, see [`strip_forces`] for the
+//! differences), and interpolation between nodes. Measured against the converged solver in
+//! host-tests `realtime_step`.
+
+#![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
+
+use crate::error::{check_finite, check_positive, Error};
+use crate::fastrip::strip_forces;
+use crate::geometry::{creepages_at, Kinematics, PatchFrame, Side, WheelsetPose};
+use crate::kalker;
+use crate::math;
+use crate::patch::{Creepage, Strip};
+use crate::table::{ContactTable, SlotField, NODE_FIXED, SLOT_FIXED};
+use crate::{Material, Real};
+
+/// Fixed-point steps of the vertical balance per round.
+pub const BALANCE_STEPS: u32 = 4;
+/// Normal–tangential coupling rounds per call.
+pub const ROUNDS: u32 = 3;
+
+/// One slot (contact patch) of a step result.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SlotResult<T> {
+    /// Normal load N_k, N (0: the slot carries no patch here).
+    pub load: T,
+    /// Contact angle δ_k, rad.
+    pub angle: T,
+    /// Rolling radius, mm.
+    pub rolling_radius: T,
+    /// Reference point, lateral position in the rail file, mm.
+    pub y_ref_rail: T,
+    /// Creepages used.
+    pub creepage: Creepage<T>,
+    /// Longitudinal creep force on the wheel (patch frame), N.
+    pub fx: T,
+    /// Lateral creep force on the wheel (patch frame), N.
+    pub fy: T,
+    /// Spin moment about the reference point, N·mm.
+    pub mz: T,
+    /// Peak pressure, MPa.
+    pub pmax: T,
+    /// Contact area, mm².
+    pub area: T,
+}
+
+/// Result of [`step`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepResult<T, const K: usize> {
+    /// Slots, in the table's order.
+    pub slots: [SlotResult<T>; K],
+    /// Vertical approach δ_v, mm.
+    pub vertical_approach: T,
+    /// Σ_k (N_k cos δ_k + F_y,k e_k) reached with the last round's forces, N.
+    pub vertical_load: T,
+}
+
+/// Inputs of [`step`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepInput<T> {
+    /// Wheelset pose (kernel convention: dy +left mm, yaw and roll rad).
+    pub pose: WheelsetPose<T>,
+    /// Vertical wheel load F_z, N (> 0).
+    pub fz: T,
+    /// Wheelset kinematics.
+    pub kinematics: Kinematics<T>,
+    /// Coefficient of friction μ (> 0).
+    pub mu: T,
+}
+
+/// Corner weights of the table cell at (dy, F).
+#[derive(Clone, Copy)]
+struct Cell<T> {
+    i: usize,
+    j: usize,
+    w: [T; 4],
+}
+
+fn cell<T: Real>(t: &ContactTable<'_, T>, dy: T, f: T) -> Result<Cell<T>, Error> {
+    let h = &t.header;
+    let (d0, d1) = (T::from_f64(h.dy_min), T::from_f64(h.dy_max));
+    if !(dy >= d0 && dy <= d1) {
+        return Err(Error::OutOfRange("lateral shift outside the contact table"));
+    }
+    let (f0, f1) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
+    if !(f >= f0 && f <= f1) {
+        return Err(Error::OutOfRange("load outside the contact table"));
+    }
+    let ui = (dy - d0) / (d1 - d0) * T::from_usize(h.n_dy - 1);
+    let i = math::clamp(math::floor(ui), T::ZERO, T::from_usize(h.n_dy - 2));
+    let fi = ui - i;
+    let uj = math::ln(f / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
+    let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
+    let fj = uj - j;
+    Ok(Cell {
+        i: i.to_f64() as usize,
+        j: j.to_f64() as usize,
+        w: [
+            (T::ONE - fi) * (T::ONE - fj),
+            (T::ONE - fi) * fj,
+            fi * (T::ONE - fj),
+            fi * fj,
+        ],
+    })
+}
+
+#[inline]
+fn at<T: Real>(t: &ContactTable<'_, T>, c: &Cell<T>, v: usize) -> T {
+    c.w[0] * t.value(c.i, c.j, v)
+        + c.w[1] * t.value(c.i, c.j + 1, v)
+        + c.w[2] * t.value(c.i + 1, c.j, v)
+        + c.w[3] * t.value(c.i + 1, c.j + 1, v)
+}
+
+/// Vertical direction factor e_k of the lateral axis (module docs).
+#[inline]
+fn e_z<T: Real>(side: Side, angle: T) -> T {
+    match side {
+        Side::Right => -math::sin(angle),
+        Side::Left => math::sin(angle),
+    }
+}
+
+/// One real-time step of one wheel from `table`: `K` ≥ the table's slots, `ST` ≥ its strips.
+/// See the module docs for the computation.
+///
+/// Errors: `NonFinite`/`NonPositive` for bad inputs (F_z, μ, pose, kinematics), `OutOfRange`
+/// for a shift or a load outside the table or capacities below the table's, and the creepage
+/// errors.
+pub fn step<T: Real, const K: usize, const ST: usize>(
+    table: &ContactTable<'_, T>,
+    input: &StepInput<T>,
+) -> Result<StepResult<T, K>, Error> {
+    let fz = check_positive(input.fz, "fz")?;
+    let mu = check_positive(input.mu, "mu")?;
+    let pose = input.pose;
+    check_finite(pose.dy, "dy")?;
+    check_finite(pose.yaw, "yaw")?;
+    check_finite(pose.roll, "roll")?;
+    let h = table.header;
+    if h.slots > K || h.strips > ST {
+        return Err(Error::OutOfRange(
+            "step capacity below the table's slots or strips",
+        ));
+    }
+    let nu = T::from_f64(h.nu);
+    let e_star = T::from_f64(h.e_star);
+    let mat = Material {
+        g: e_star * (T::ONE - nu),
+        nu,
+        e_star,
+    };
+    let side = h.side;
+    let ks = h.slots;
+    let st = h.strips;
+    let mut ratio = [T::ZERO; K];
+    let mut out = StepResult {
+        slots: [SlotResult::default(); K],
+        vertical_approach: T::ZERO,
+        vertical_load: T::ZERO,
+    };
+    let (f_lo, f_hi) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
+    for _round in 0..ROUNDS {
+        // 2. vertical balance
+        let mut f = math::clamp(fz, f_lo, f_hi);
+        for _ in 0..BALANCE_STEPS {
+            let c = cell(table, pose.dy, f)?;
+            let mut sum = T::ZERO;
+            for (k, r) in ratio.iter().enumerate().take(ks) {
+                let o = table.slot_offset(k);
+                let share = at(table, &c, o + SlotField::Share as usize);
+                let ang = at(table, &c, o + SlotField::Angle as usize);
+                sum += share * (math::cos(ang) + *r * e_z(side, ang));
+            }
+            if !(sum > T::ZERO) {
+                return Err(Error::NoContact);
+            }
+            f = fz / sum;
+            if !(f >= f_lo && f <= f_hi) {
+                return Err(Error::OutOfRange("load outside the contact table"));
+            }
+        }
+        // 3.–5. slots at F
+        let c = cell(table, pose.dy, f)?;
+        let f13 = math::cbrt(f);
+        let f23 = f13 * f13;
+        let cz = at(table, &c, 1);
+        let dv = at(table, &c, 2) * f23;
+        out.vertical_approach = dv;
+        let mut vload = T::ZERO;
+        for (k, slot) in out.slots.iter_mut().enumerate().take(ks) {
+            let o = table.slot_offset(k);
+            let fld = |q: SlotField| at(table, &c, o + q as usize);
+            let load = fld(SlotField::Share) * f;
+            let angle = fld(SlotField::Angle);
+            *slot = SlotResult {
+                load,
+                angle,
+                rolling_radius: fld(SlotField::RollingRadius),
+                y_ref_rail: fld(SlotField::YRefRail),
+                pmax: fld(SlotField::Pmax) * f13,
+                area: fld(SlotField::Area) * f23,
+                ..SlotResult::default()
+            };
+            if !(load > T::ZERO) {
+                ratio[k] = T::ZERO;
+                continue;
+            }
+            let frame = PatchFrame {
+                y_ref_rail: slot.y_ref_rail,
+                z_ref_rail: T::ZERO,
+                y_ref_wheel: T::ZERO,
+                z_ref_wheel: T::ZERO,
+                x_ref: fld(SlotField::XRef),
+                y_ref_track: fld(SlotField::YRefTrack),
+                z_ref_track: fld(SlotField::ZRefTrack),
+                angle,
+                angle_own: angle,
+                rolling_radius: slot.rolling_radius,
+                weight: T::ZERO,
+                approach_vertical: dv,
+                approach: fld(SlotField::Approach) * f23,
+                overlap_y: [T::ZERO; 2],
+                overlap_s: [T::ZERO; 2],
+                components: 1,
+            };
+            let cr = creepages_at(&pose, side, cz, &frame, &input.kinematics)?;
+            let cr = Creepage {
+                xi: cr.xi,
+                eta: cr.eta,
+                phi: cr.phi,
+            };
+            slot.creepage = cr;
+            // strips: a, p̂ at F, p̂ rescaled to the slot load
+            let (ylo, yhi) = (fld(SlotField::YLo), fld(SlotField::YHi));
+            let w = (yhi - ylo) / T::from_usize(st);
+            let base = o + SLOT_FIXED;
+            let mut strips = [(T::ZERO, T::ZERO); ST];
+            let mut sum = T::ZERO;
+            for (q, s) in strips.iter_mut().enumerate().take(st) {
+                let a = at(table, &c, base + q) * f13;
+                let p = at(table, &c, base + st + q) * f13;
+                *s = (a, p);
+                sum += a * p;
+            }
+            let carried = T::PI * T::HALF * sum * w;
+            if !(carried > T::ZERO) || !(w > T::ZERO) {
+                ratio[k] = T::ZERO;
+                continue;
+            }
+            let scale = load / carried;
+            let (mut fx, mut fy, mut mz) = (T::ZERO, T::ZERO, T::ZERO);
+            for (q, &(a, p)) in strips.iter().enumerate().take(st) {
+                if !(a > T::ZERO && p > T::ZERO) {
+                    continue;
+                }
+                let g = at(table, &c, base + 2 * st + q);
+                let kc = kalker::coefficients(T::ONE / math::max(g, math::c(1e-3)), nu)?;
+                let s = Strip {
+                    y: ylo + (T::from_usize(q) + T::HALF) * w,
+                    dy: w,
+                    a,
+                    xc: T::ZERO,
+                    p_hat: p * scale,
+                    c11: kc.c11,
+                    c22: kc.c22,
+                    c23: kc.c23,
+                    c33: kc.c33,
+                    sqrt_b_over_a: math::sqrt(g),
+                    ..Strip::default()
+                };
+                let (sx, sy, sm) = strip_forces(&s, &cr, mu, mat.g, mat.nu);
+                fx += sx;
+                fy += sy;
+                mz += sm;
+            }
+            slot.fx = fx;
+            slot.fy = fy;
+            slot.mz = mz;
+            ratio[k] = fy / load;
+            vload += load * math::cos(angle) + fy * e_z(side, angle);
+        }
+        out.vertical_load = vload;
+    }
+    let _ = NODE_FIXED;
+    Ok(out)
+}

@@ -1,0 +1,807 @@
+//! Contact tables: the per-profile-pair part of the wheel–rail contact, solved once (offline or at
+//! start-up) so that the real-time step ([`crate::step`]) only interpolates.
+//!
+//! # What a table holds
+//! For one profile pair, track set-up, side and material, on a grid of lateral shifts dy (the
+//! kernel's [`WheelsetPose::dy`], mm, +left) × vertical loads F (N, log-spaced), the converged
+//! normal solution of the per-wheel solver ([`crate::wheel::solve_wheel`] with zero creepage, so
+//! that Σ_k N_k cos δ_k = F) with every patch in a fixed **slot**:
+//! * per node: the wheelset roll used (0, or the two-wheel equilibrium roll of the shift,
+//!   [`TableSpec::equilibrium_roll`]), the wheel centre height of the touching position and the
+//!   vertical approach δ_v;
+//! * per slot: the load share N_k/F, the frame (contact angle, rolling radius, reference point in
+//!   the track frame and in the rail file, normal approach), pmax/F^{1/3}, area/F^{2/3}, and the
+//!   lateral span [y_lo, y_hi] (contact frame) carrying [`ST`-many](ContactTable::strips) evenly
+//!   spaced strips with their half-length a_j/F^{1/3}, peak pressure p̂_j/F^{1/3} and local
+//!   ellipse ratio n_j/m_j (Ayasse–Chollet), resampled from the solver's own STRIPES strips.
+//!
+//! The load scalings are Hertz's (a, p ∝ F^{1/3}, area and approach ∝ F^{2/3}), so the stored
+//! values vary slowly along the load axis and are interpolated linearly in ln F.
+//!
+//! # Slots and continuity
+//! Patches are assigned to slots by continuation: nodes are visited dy-major; each patch goes to
+//! the slot whose reference point (rail-file y) at the neighbouring node (previous dy, same load;
+//! else same dy, previous load) is nearest, within [`crate::wheel::MATCH_MM`]; a new patch takes
+//! a free slot. A slot without a patch at a node has load share 0 and zero strips, and carries
+//! the frame of its nearest node with a patch, so that interpolation fades a patch in and out
+//! continuously (the load goes to 0, the frame does not jump).
+//!
+//! # Bytes (format version [`VERSION`])
+//! A table is plain bytes (a rig keeps it in flash and the step reads it in place): a header of
+//! [`HEADER_BYTES`] bytes, then the payload of `T` values, little-endian, node-major (dy outer,
+//! load inner), each node [`NODE_FIXED`] values then `K` slots of [`SLOT_FIXED`] + 3·`ST` values.
+//! Header fields, little-endian at fixed offsets: magic `b"WRCTABLE"` (0), version u32 (8),
+//! bytes per value u32 (12: 4 = f32, 8 = f64), n_dy u32 (16), n_load u32 (20), slots K u32 (24),
+//! strips ST u32 (28), side u32 (32: 0 left, 1 right), equilibrium roll u32 (36), then f64:
+//! dy_min (40), dy_max (48), f_min (56), f_max (64), E* (72), ν (80), back-to-back (88), gauge
+//! (96), then u64 checksums (FNV-1a 64): rail profile (104), wheel profile (112), payload (120).
+//! [`ContactTable::from_bytes`] checks every field, the length and the payload checksum before
+//! use; a wrong, truncated or damaged table is [`Error::BadTable`], never a panic.
+
+#![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
+
+use crate::error::{check_finite, check_positive, Error};
+use crate::geometry::{equilibrium_roll, Side, TrackSetup, WheelRail, WheelsetPose};
+use crate::math;
+use crate::patch::Creepage;
+use crate::profile::ProfileTable;
+use crate::wheel::{resolve_patch_strips, solve_wheel, WheelConfig, WheelWorkspace, MATCH_MM};
+use crate::{Material, Real};
+use core::marker::PhantomData;
+
+/// Format magic.
+pub const MAGIC: [u8; 8] = *b"WRCTABLE";
+/// Format version of the byte layout.
+pub const VERSION: u32 = 1;
+/// Header size, bytes.
+pub const HEADER_BYTES: usize = 128;
+/// Values per node before the slots: roll (rad), wheel centre height cz (mm), δ_v/F^{2/3}.
+pub const NODE_FIXED: usize = 3;
+/// Values per slot before the strips (see [`SlotField`]).
+pub const SLOT_FIXED: usize = 12;
+
+/// The per-slot fixed values, in their order in the payload.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(usize)]
+pub enum SlotField {
+    /// N_k / F (dimensionless).
+    Share = 0,
+    /// Contact angle δ_k, rad.
+    Angle,
+    /// Rolling radius, mm.
+    RollingRadius,
+    /// Reference point x in the track frame, mm.
+    XRef,
+    /// Reference point y in the track frame, mm.
+    YRefTrack,
+    /// Reference point z in the track frame, mm.
+    ZRefTrack,
+    /// Reference point y in the rail file, mm.
+    YRefRail,
+    /// Normal approach / F^{2/3}, mm·N^{−2/3}.
+    Approach,
+    /// pmax / F^{1/3}, MPa·N^{−1/3}.
+    Pmax,
+    /// Area / F^{2/3}, mm²·N^{−2/3}.
+    Area,
+    /// Lower end of the strips' span (contact frame), mm.
+    YLo,
+    /// Upper end of the strips' span, mm.
+    YHi,
+}
+
+/// Grid and set-up of a table build.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TableSpec<T> {
+    /// Lowest lateral shift, mm (kernel convention: +left).
+    pub dy_min: T,
+    /// Highest lateral shift, mm.
+    pub dy_max: T,
+    /// Shift nodes (≥ 2), evenly spaced.
+    pub n_dy: usize,
+    /// Lowest vertical load, N.
+    pub f_min: T,
+    /// Highest vertical load, N.
+    pub f_max: T,
+    /// Load nodes (≥ 2), evenly spaced in ln F.
+    pub n_load: usize,
+    /// Placement grid step, mm (as [`WheelRail::place`]).
+    pub grid_step: T,
+    /// Build every shift at the two-wheel equilibrium roll ([`equilibrium_roll`], yaw 0) instead
+    /// of roll 0.
+    pub equilibrium_roll: bool,
+}
+
+/// Validated header of a table.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TableHeader {
+    /// Bytes per value (4: f32, 8: f64).
+    pub value_bytes: usize,
+    /// Shift nodes.
+    pub n_dy: usize,
+    /// Load nodes.
+    pub n_load: usize,
+    /// Slots per node.
+    pub slots: usize,
+    /// Strips per slot.
+    pub strips: usize,
+    /// Side.
+    pub side: Side,
+    /// Built at the equilibrium roll.
+    pub equilibrium_roll: bool,
+    /// Lowest shift, mm.
+    pub dy_min: f64,
+    /// Highest shift, mm.
+    pub dy_max: f64,
+    /// Lowest load, N.
+    pub f_min: f64,
+    /// Highest load, N.
+    pub f_max: f64,
+    /// Contact modulus E*, MPa.
+    pub e_star: f64,
+    /// Poisson ratio ν.
+    pub nu: f64,
+    /// Back-to-back distance, mm.
+    pub back_to_back: f64,
+    /// Gauge, mm.
+    pub gauge: f64,
+    /// FNV-1a checksum of the rail profile table.
+    pub rail_checksum: u64,
+    /// FNV-1a checksum of the wheel profile table.
+    pub wheel_checksum: u64,
+    /// FNV-1a checksum of the payload.
+    pub payload_checksum: u64,
+}
+
+impl TableHeader {
+    /// Values per node.
+    pub fn node_values(&self) -> usize {
+        NODE_FIXED + self.slots * (SLOT_FIXED + 3 * self.strips)
+    }
+    /// Total size of the table, bytes.
+    pub fn total_bytes(&self) -> usize {
+        HEADER_BYTES + self.n_dy * self.n_load * self.node_values() * self.value_bytes
+    }
+}
+
+/// Size in bytes of a table with this grid, `K` slots and `ST` strips in precision `T`.
+pub fn table_bytes<T: Real>(n_dy: usize, n_load: usize, k: usize, st: usize) -> usize {
+    HEADER_BYTES + n_dy * n_load * (NODE_FIXED + k * (SLOT_FIXED + 3 * st)) * T::BYTES
+}
+
+/// FNV-1a 64-bit over `bytes`, continuing from `h` (start with [`FNV_OFFSET`]).
+pub fn fnv1a(mut h: u64, bytes: &[u8]) -> u64 {
+    for &b in bytes {
+        h ^= b as u64;
+        h = h.wrapping_mul(0x0000_0100_0000_01b3);
+    }
+    h
+}
+
+/// FNV-1a 64-bit offset basis.
+pub const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+
+/// Checksum of a profile table: its node count and every node's y, z in f64 bits.
+pub fn profile_checksum<T: Real, const N: usize>(p: &ProfileTable<T, N>) -> u64 {
+    let mut h = fnv1a(FNV_OFFSET, &(p.len as u64).to_le_bytes());
+    for i in 0..p.len.min(N) {
+        h = fnv1a(h, &p.y[i].to_f64().to_le_bytes());
+        h = fnv1a(h, &p.z[i].to_f64().to_le_bytes());
+    }
+    h
+}
+
+/// A validated contact table borrowed from its bytes (flash, a static, or a host buffer).
+#[derive(Clone, Copy, Debug)]
+pub struct ContactTable<'a, T> {
+    /// The header.
+    pub header: TableHeader,
+    payload: &'a [u8],
+    node_values: usize,
+    _t: PhantomData<T>,
+}
+
+fn u32_at(b: &[u8], o: usize) -> u32 {
+    let mut w = [0u8; 4];
+    w.copy_from_slice(&b[o..o + 4]);
+    u32::from_le_bytes(w)
+}
+fn u64_at(b: &[u8], o: usize) -> u64 {
+    let mut w = [0u8; 8];
+    w.copy_from_slice(&b[o..o + 8]);
+    u64::from_le_bytes(w)
+}
+fn f64_at(b: &[u8], o: usize) -> f64 {
+    f64::from_bits(u64_at(b, o))
+}
+
+impl<'a, T: Real> ContactTable<'a, T> {
+    /// Validates `bytes` (magic, version, precision = `T`, counts, grid, length, payload
+    /// checksum) and borrows them.
+    ///
+    /// Errors: [`Error::BadTable`] naming the first check that failed.
+    pub fn from_bytes(bytes: &'a [u8]) -> Result<Self, Error> {
+        if bytes.len() < HEADER_BYTES {
+            return Err(Error::BadTable("shorter than the header"));
+        }
+        if bytes[..8] != MAGIC {
+            return Err(Error::BadTable("magic"));
+        }
+        if u32_at(bytes, 8) != VERSION {
+            return Err(Error::BadTable("format version"));
+        }
+        let vb = u32_at(bytes, 12) as usize;
+        if vb != T::BYTES {
+            return Err(Error::BadTable("precision differs from the caller's"));
+        }
+        let h = TableHeader {
+            value_bytes: vb,
+            n_dy: u32_at(bytes, 16) as usize,
+            n_load: u32_at(bytes, 20) as usize,
+            slots: u32_at(bytes, 24) as usize,
+            strips: u32_at(bytes, 28) as usize,
+            side: match u32_at(bytes, 32) {
+                0 => Side::Left,
+                1 => Side::Right,
+                _ => return Err(Error::BadTable("side")),
+            },
+            equilibrium_roll: match u32_at(bytes, 36) {
+                0 => false,
+                1 => true,
+                _ => return Err(Error::BadTable("roll flag")),
+            },
+            dy_min: f64_at(bytes, 40),
+            dy_max: f64_at(bytes, 48),
+            f_min: f64_at(bytes, 56),
+            f_max: f64_at(bytes, 64),
+            e_star: f64_at(bytes, 72),
+            nu: f64_at(bytes, 80),
+            back_to_back: f64_at(bytes, 88),
+            gauge: f64_at(bytes, 96),
+            rail_checksum: u64_at(bytes, 104),
+            wheel_checksum: u64_at(bytes, 112),
+            payload_checksum: u64_at(bytes, 120),
+        };
+        let counts_ok = (2..=4096).contains(&h.n_dy)
+            && (2..=256).contains(&h.n_load)
+            && (1..=16).contains(&h.slots)
+            && (2..=256).contains(&h.strips);
+        if !counts_ok {
+            return Err(Error::BadTable("counts"));
+        }
+        let grid_ok = h.dy_min.is_finite()
+            && h.dy_max.is_finite()
+            && h.dy_max > h.dy_min
+            && h.f_min.is_finite()
+            && h.f_max.is_finite()
+            && h.f_min > 0.0
+            && h.f_max > h.f_min
+            && h.e_star.is_finite()
+            && h.e_star > 0.0
+            && h.nu.is_finite();
+        if !grid_ok {
+            return Err(Error::BadTable("grid"));
+        }
+        if bytes.len() != h.total_bytes() {
+            return Err(Error::BadTable("length"));
+        }
+        let payload = &bytes[HEADER_BYTES..];
+        if fnv1a(FNV_OFFSET, payload) != h.payload_checksum {
+            return Err(Error::BadTable("payload checksum"));
+        }
+        Ok(Self {
+            header: h,
+            payload,
+            node_values: h.node_values(),
+            _t: PhantomData,
+        })
+    }
+
+    /// Slots per node.
+    pub fn slots(&self) -> usize {
+        self.header.slots
+    }
+
+    /// Strips per slot.
+    pub fn strips(&self) -> usize {
+        self.header.strips
+    }
+
+    /// Value `v` of node (`i` shift, `j` load). Indices beyond the grid read as 0 (never
+    /// reached by the step, which clamps its cell).
+    #[inline]
+    pub fn value(&self, i: usize, j: usize, v: usize) -> T {
+        let n = (i * self.header.n_load + j) * self.node_values + v;
+        let o = n * T::BYTES;
+        match self.payload.get(o..o + T::BYTES) {
+            Some(b) => T::read_le(b),
+            None => T::ZERO,
+        }
+    }
+
+    /// Offset of slot `k`'s first value within a node.
+    #[inline]
+    pub fn slot_offset(&self, k: usize) -> usize {
+        NODE_FIXED + k * (SLOT_FIXED + 3 * self.header.strips)
+    }
+
+    /// Shift of node `i`, mm.
+    pub fn dy_node(&self, i: usize) -> T {
+        let h = &self.header;
+        T::from_f64(h.dy_min + (h.dy_max - h.dy_min) * i as f64 / (h.n_dy - 1) as f64)
+    }
+
+    /// Load of node `j`, N.
+    pub fn load_node(&self, j: usize) -> T {
+        let h = &self.header;
+        let u = j as f64 / (h.n_load - 1) as f64;
+        T::from_f64(libm::exp(
+            libm::log(h.f_min) * (1.0 - u) + libm::log(h.f_max) * u,
+        ))
+    }
+}
+
+/// What a table build did.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct BuildReport {
+    /// Nodes solved.
+    pub nodes: usize,
+    /// Nodes whose solve did not meet its tolerances (their result is stored, flagged here).
+    pub not_converged: usize,
+    /// Most patches seen at one node.
+    pub max_patches: usize,
+    /// Most slots in use over the table.
+    pub slots_used: usize,
+    /// Bytes written.
+    pub bytes: usize,
+}
+
+/// Writer of the payload values of one node.
+struct NodeWriter<'b> {
+    out: &'b mut [u8],
+    pos: usize,
+}
+
+impl NodeWriter<'_> {
+    fn put<T: Real>(&mut self, x: T) -> Result<(), Error> {
+        let end = self.pos + T::BYTES;
+        let dst = self
+            .out
+            .get_mut(self.pos..end)
+            .ok_or(Error::BadTable("output buffer too small"))?;
+        x.write_le(dst);
+        self.pos = end;
+        Ok(())
+    }
+}
+
+/// Scratch slot of a table build (one per slot and load node of a shift row; a build needs two
+/// rows, 2·`K`·`n_load` of them).
+#[derive(Clone, Copy, Debug)]
+pub struct TableSlot<T, const ST: usize> {
+    present: bool,
+    fixed: [T; SLOT_FIXED],
+    a: [T; ST],
+    p: [T; ST],
+    g: [T; ST],
+}
+
+impl<T: Real, const ST: usize> TableSlot<T, ST> {
+    /// Empty scratch slot.
+    pub const EMPTY: Self = Self {
+        present: false,
+        fixed: [T::ZERO; SLOT_FIXED],
+        a: [T::ZERO; ST],
+        p: [T::ZERO; ST],
+        g: [T::ONE; ST],
+    };
+}
+
+/// Builds the contact table of (`rail`, `wheel`, `setup`, `side`, `mat`) on `spec`'s grid with
+/// the solver configuration `cfg` (its pipeline and patch options; its creepage is replaced by
+/// zero) into `out` (at least [`table_bytes`] bytes; the rest is left untouched). `K` slots of
+/// `ST` strips; `nodes` is scratch for one shift row of `spec.n_load` nodes (`K`·`n_load`
+/// [`TableSlot`]s are needed: pass at least that many), `ws` the solver's workspace.
+///
+/// Deterministic: the same inputs give the same bytes on every machine with IEEE arithmetic of
+/// `T` (the solve is).
+///
+/// Errors: those of the geometry and the solver at a node (a shift or load where the profiles
+/// give no contact is an error: choose the grid inside the profiles' range), `OutOfRange` for
+/// a grid that is too small or a row scratch that is too short, `TooManyRegions` when more than
+/// `K` slots would be needed, [`Error::BadTable`] when `out` is too small.
+#[allow(clippy::too_many_arguments)]
+pub fn build_table<
+    T: Real,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const ST: usize,
+    const WK: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+>(
+    rail: &ProfileTable<T, N>,
+    wheel: &ProfileTable<T, N>,
+    setup: &TrackSetup<T>,
+    side: Side,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    spec: &TableSpec<T>,
+    rows: &mut [TableSlot<T, ST>],
+    ws: &mut WheelWorkspace<T, WK, NP, NS, NR, S, C, SS>,
+    out: &mut [u8],
+) -> Result<BuildReport, Error> {
+    check_finite(spec.dy_min, "dy_min")?;
+    check_finite(spec.dy_max, "dy_max")?;
+    check_positive(spec.f_min, "f_min")?;
+    check_positive(spec.f_max, "f_max")?;
+    check_positive(spec.grid_step, "grid_step")?;
+    if !(spec.dy_max > spec.dy_min) || !(spec.f_max > spec.f_min) {
+        return Err(Error::OutOfRange("table grid"));
+    }
+    if spec.n_dy < 2 || spec.n_load < 2 || spec.n_dy > 4096 || spec.n_load > 256 {
+        return Err(Error::OutOfRange("table node counts"));
+    }
+    if ST < 2 || K == 0 || K > 16 || ST > 256 {
+        return Err(Error::OutOfRange("table slots or strips"));
+    }
+    let nl = spec.n_load;
+    if rows.len() < 2 * K * nl {
+        return Err(Error::OutOfRange("row scratch"));
+    }
+    let total = table_bytes::<T>(spec.n_dy, nl, K, ST);
+    if out.len() < total {
+        return Err(Error::BadTable("output buffer too small"));
+    }
+    let mut c = *cfg;
+    c.creepage = Some(Creepage {
+        xi: T::ZERO,
+        eta: T::ZERO,
+        phi: T::ZERO,
+    });
+    let mut rep = BuildReport::default();
+    let (prev, cur) = rows.split_at_mut(K * nl);
+    let prev = &mut prev[..K * nl];
+    let cur = &mut cur[..K * nl];
+    for s in prev.iter_mut() {
+        *s = TableSlot::EMPTY;
+    }
+    // last rail-file y of every slot seen anywhere (slot identity for re-appearing patches)
+    let mut last_y: [Option<T>; K] = [None; K];
+    let node_bytes = (NODE_FIXED + K * (SLOT_FIXED + 3 * ST)) * T::BYTES;
+    let payload = &mut out[HEADER_BYTES..total];
+    let mut geom = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
+    for i in 0..spec.n_dy {
+        let u = T::from_usize(i) / T::from_usize(spec.n_dy - 1);
+        let dy = spec.dy_min + (spec.dy_max - spec.dy_min) * u;
+        let roll = if spec.equilibrium_roll {
+            equilibrium_roll::<T, N, M>(rail, wheel, setup, dy, T::ZERO, spec.grid_step)?.roll
+        } else {
+            T::ZERO
+        };
+        let pose = WheelsetPose {
+            dy,
+            yaw: T::ZERO,
+            roll,
+        };
+        geom.place_in(rail, wheel, setup, &pose, side, spec.grid_step)?;
+        let mut fixed = [[T::ZERO; NODE_FIXED]; 256];
+        for j in 0..nl {
+            let uj = T::from_usize(j) / T::from_usize(nl - 1);
+            let f = math::exp(math::ln(spec.f_min) * (T::ONE - uj) + math::ln(spec.f_max) * uj);
+            let res = solve_wheel(&geom, f, mat, &c, ws, &mut ())?;
+            rep.nodes += 1;
+            if !res.converged {
+                rep.not_converged += 1;
+            }
+            rep.max_patches = rep.max_patches.max(res.n);
+            let f13 = math::cbrt(f);
+            let f23 = f13 * f13;
+            fixed[j] = [roll, geom.wheel.cz, res.vertical_approach / f23];
+            // candidates: previous shift, same load; else same shift, previous load; else last
+            let mut cand: [Option<T>; K] = [None; K];
+            for k in 0..K {
+                let p = &prev[j * K + k];
+                cand[k] = if p.present {
+                    Some(p.fixed[SlotField::YRefRail as usize])
+                } else if j > 0 && cur[(j - 1) * K + k].present {
+                    Some(cur[(j - 1) * K + k].fixed[SlotField::YRefRail as usize])
+                } else {
+                    last_y[k]
+                };
+            }
+            for s in cur[j * K..(j + 1) * K].iter_mut() {
+                *s = TableSlot::EMPTY;
+            }
+            let mut taken = [false; K];
+            for q in 0..res.n.min(WK) {
+                let Some(wp) = res.patches[q] else { continue };
+                if !(wp.load > T::ZERO) {
+                    continue;
+                }
+                let y = wp.frame.y_ref_rail;
+                // nearest free candidate within MATCH_MM, else the first free slot never used,
+                // else the first free slot
+                let mut best: Option<(usize, T)> = None;
+                for k in 0..K {
+                    if taken[k] {
+                        continue;
+                    }
+                    if let Some(yc) = cand[k] {
+                        let d = math::abs(yc - y);
+                        if d <= math::c(MATCH_MM) && best.is_none_or(|(_, b)| d < b) {
+                            best = Some((k, d));
+                        }
+                    }
+                }
+                let k = match best {
+                    Some((k, _)) => k,
+                    None => (0..K)
+                        .find(|&k| !taken[k] && cand[k].is_none())
+                        .or_else(|| (0..K).find(|&k| !taken[k]))
+                        .ok_or(Error::TooManyRegions)?,
+                };
+                taken[k] = true;
+                last_y[k] = Some(y);
+                rep.slots_used = rep.slots_used.max(k + 1);
+                let mut slot = TableSlot::EMPTY;
+                slot.present = true;
+                let fr = &wp.frame;
+                slot.fixed[SlotField::Share as usize] = wp.load / f;
+                slot.fixed[SlotField::Angle as usize] = fr.angle;
+                slot.fixed[SlotField::RollingRadius as usize] = fr.rolling_radius;
+                slot.fixed[SlotField::XRef as usize] = fr.x_ref;
+                slot.fixed[SlotField::YRefTrack as usize] = fr.y_ref_track;
+                slot.fixed[SlotField::ZRefTrack as usize] = fr.z_ref_track;
+                slot.fixed[SlotField::YRefRail as usize] = fr.y_ref_rail;
+                slot.fixed[SlotField::Approach as usize] = fr.approach / f23;
+                slot.fixed[SlotField::Pmax as usize] = wp.result.pmax / f13;
+                slot.fixed[SlotField::Area as usize] = wp.result.area / f23;
+                resolve_patch_strips(ws, q, wp.load, mat, &c)?;
+                resample(&ws.pipeline.set, wp.load, &mut slot)?;
+                for v in slot.a.iter_mut() {
+                    *v /= f13;
+                }
+                for v in slot.p.iter_mut() {
+                    *v /= f13;
+                }
+                cur[j * K + k] = slot;
+            }
+        }
+        // empty slots carry the frame of their nearest present node of this row (continuity)
+        for k in 0..K {
+            for j in 0..nl {
+                if cur[j * K + k].present {
+                    continue;
+                }
+                let mut src: Option<usize> = None;
+                for dj in 1..nl {
+                    if j >= dj && cur[(j - dj) * K + k].present {
+                        src = Some(j - dj);
+                        break;
+                    }
+                    if j + dj < nl && cur[(j + dj) * K + k].present {
+                        src = Some(j + dj);
+                        break;
+                    }
+                }
+                let from = match src {
+                    Some(js) => Some(cur[js * K + k]),
+                    None if prev[j * K + k].fixed[SlotField::RollingRadius as usize] != T::ZERO => {
+                        Some(prev[j * K + k])
+                    }
+                    None => None,
+                };
+                if let Some(s) = from {
+                    let e = &mut cur[j * K + k];
+                    e.fixed = s.fixed;
+                    e.fixed[SlotField::Share as usize] = T::ZERO;
+                    e.fixed[SlotField::Pmax as usize] = T::ZERO;
+                    e.fixed[SlotField::Area as usize] = T::ZERO;
+                    e.g = s.g;
+                }
+            }
+        }
+        for j in 0..nl {
+            let base = (i * nl + j) * node_bytes;
+            let mut w = NodeWriter {
+                out: &mut payload[base..base + node_bytes],
+                pos: 0,
+            };
+            for v in fixed[j] {
+                w.put(v)?;
+            }
+            for k in 0..K {
+                let s = &cur[j * K + k];
+                for v in s.fixed {
+                    w.put(v)?;
+                }
+                for v in s.a {
+                    w.put(v)?;
+                }
+                for v in s.p {
+                    w.put(v)?;
+                }
+                for v in s.g {
+                    w.put(v)?;
+                }
+            }
+        }
+        prev.copy_from_slice(cur);
+    }
+    // Slots that were empty at the start of the table (a patch appearing at a later shift) got
+    // no frame in their first rows: copy it back from the first row where the slot exists.
+    backfill_frames::<T, K, ST>(payload, spec.n_dy, nl, node_bytes)?;
+    let checksum = fnv1a(FNV_OFFSET, &payload[..]);
+    let hdr = &mut out[..HEADER_BYTES];
+    hdr.fill(0);
+    hdr[..8].copy_from_slice(&MAGIC);
+    let mut put32 = |o: usize, v: u32| hdr[o..o + 4].copy_from_slice(&v.to_le_bytes());
+    put32(8, VERSION);
+    put32(12, T::BYTES as u32);
+    put32(16, spec.n_dy as u32);
+    put32(20, nl as u32);
+    put32(24, K as u32);
+    put32(28, ST as u32);
+    put32(32, matches!(side, Side::Right) as u32);
+    put32(36, spec.equilibrium_roll as u32);
+    let mut put64 = |o: usize, v: u64| hdr[o..o + 8].copy_from_slice(&v.to_le_bytes());
+    put64(40, spec.dy_min.to_f64().to_bits());
+    put64(48, spec.dy_max.to_f64().to_bits());
+    put64(56, spec.f_min.to_f64().to_bits());
+    put64(64, spec.f_max.to_f64().to_bits());
+    put64(72, mat.e_star.to_f64().to_bits());
+    put64(80, mat.nu.to_f64().to_bits());
+    put64(88, setup.back_to_back.to_f64().to_bits());
+    put64(96, setup.gauge.to_f64().to_bits());
+    put64(104, profile_checksum(rail));
+    put64(112, profile_checksum(wheel));
+    put64(120, checksum);
+    rep.bytes = total;
+    Ok(rep)
+}
+
+/// Copies, for every slot of every node that has no frame yet (all fixed values 0), the frame of
+/// the nearest later shift row at the same load where the slot has one.
+fn backfill_frames<T: Real, const K: usize, const ST: usize>(
+    payload: &mut [u8],
+    ny: usize,
+    nl: usize,
+    node_bytes: usize,
+) -> Result<(), Error> {
+    let slot_bytes = (SLOT_FIXED + 3 * ST) * T::BYTES;
+    let frame_bytes = SLOT_FIXED * T::BYTES;
+    let read = |p: &[u8], o: usize| T::read_le(&p[o..o + T::BYTES]);
+    for k in 0..K {
+        for j in 0..nl {
+            for i in 0..ny {
+                let at =
+                    |i: usize| (i * nl + j) * node_bytes + NODE_FIXED * T::BYTES + k * slot_bytes;
+                let o = at(i);
+                // rolling radius is > 0 for every frame that was written
+                let rr = read(payload, o + SlotField::RollingRadius as usize * T::BYTES);
+                if rr != T::ZERO {
+                    continue;
+                }
+                let src = (i + 1..ny).find(|&q| {
+                    read(
+                        payload,
+                        at(q) + SlotField::RollingRadius as usize * T::BYTES,
+                    ) != T::ZERO
+                });
+                if let Some(q) = src {
+                    let so = at(q);
+                    let mut frame = [0u8; SLOT_FIXED * 8];
+                    frame[..frame_bytes].copy_from_slice(&payload[so..so + frame_bytes]);
+                    payload[o..o + frame_bytes].copy_from_slice(&frame[..frame_bytes]);
+                    let zero = |p: &mut [u8], f: SlotField| {
+                        let oo = o + f as usize * T::BYTES;
+                        T::ZERO.write_le(&mut p[oo..oo + T::BYTES]);
+                    };
+                    zero(payload, SlotField::Share);
+                    zero(payload, SlotField::Pmax);
+                    zero(payload, SlotField::Area);
+                    // the ratios n/m too (strips stay empty)
+                    let go = o + (SLOT_FIXED + 2 * ST) * T::BYTES;
+                    let sgo = so + (SLOT_FIXED + 2 * ST) * T::BYTES;
+                    let mut g = [0u8; 256 * 8];
+                    let gb = ST * T::BYTES;
+                    g[..gb].copy_from_slice(&payload[sgo..sgo + gb]);
+                    payload[go..go + gb].copy_from_slice(&g[..gb]);
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Resamples the solver's strips (`set`, per region evenly spaced) onto `ST` evenly spaced
+/// strips over [min y_lo, max y_hi] of the regions: a_j and p̂_j linearly between the strip
+/// centres of the region that contains y, going to 0 at the region's ends; outside every region
+/// a_j = 0. n/m likewise (held constant beyond the outer centres). p̂ is then scaled so that the
+/// strips carry `load`: Σ (π/2) a_j p̂_j δy = N.
+fn resample<T: Real, const SS: usize, const NR: usize, const ST: usize>(
+    set: &crate::stripes::StripSet<T, SS, NR>,
+    load: T,
+    slot: &mut TableSlot<T, ST>,
+) -> Result<(), Error> {
+    let nreg = set.n_regions.min(NR);
+    if nreg == 0 {
+        return Err(Error::NoContact);
+    }
+    let mut ylo = T::MAX;
+    let mut yhi = -T::MAX;
+    for r in &set.regions[..nreg] {
+        ylo = math::min(ylo, r.y_lo);
+        yhi = math::max(yhi, r.y_hi);
+    }
+    if !(yhi > ylo) {
+        return Err(Error::NoContact);
+    }
+    slot.fixed[SlotField::YLo as usize] = ylo;
+    slot.fixed[SlotField::YHi as usize] = yhi;
+    let w = (yhi - ylo) / T::from_usize(ST);
+    let mut sum = T::ZERO;
+    for q in 0..ST {
+        let y = ylo + (T::from_usize(q) + T::HALF) * w;
+        let (mut a, mut p, mut g) = (T::ZERO, T::ZERO, T::ONE);
+        for r in &set.regions[..nreg] {
+            if !(y >= r.y_lo && y <= r.y_hi) || r.count == 0 {
+                continue;
+            }
+            let (f, n) = (r.first, r.count);
+            if f + n > set.n_strips.min(SS) {
+                return Err(Error::OutOfRange("strip index"));
+            }
+            // piecewise linear through (y_lo, 0), the centres, (y_hi, 0)
+            let lerp = |y0: T, v0: T, y1: T, v1: T| {
+                if y1 > y0 {
+                    v0 + (v1 - v0) * (y - y0) / (y1 - y0)
+                } else {
+                    v0
+                }
+            };
+            if y <= set.y[f] {
+                a = lerp(r.y_lo, T::ZERO, set.y[f], set.a[f]);
+                p = lerp(r.y_lo, T::ZERO, set.y[f], set.pmax[f]);
+                g = set.n_over_m[f];
+            } else if y >= set.y[f + n - 1] {
+                let l = f + n - 1;
+                a = lerp(set.y[l], set.a[l], r.y_hi, T::ZERO);
+                p = lerp(set.y[l], set.pmax[l], r.y_hi, T::ZERO);
+                g = set.n_over_m[l];
+            } else {
+                for m in f..f + n - 1 {
+                    if y >= set.y[m] && y <= set.y[m + 1] {
+                        a = lerp(set.y[m], set.a[m], set.y[m + 1], set.a[m + 1]);
+                        p = lerp(set.y[m], set.pmax[m], set.y[m + 1], set.pmax[m + 1]);
+                        g = lerp(set.y[m], set.n_over_m[m], set.y[m + 1], set.n_over_m[m + 1]);
+                        break;
+                    }
+                }
+            }
+            break;
+        }
+        if !(g > T::ZERO) {
+            g = T::ONE;
+        }
+        slot.a[q] = math::max(a, T::ZERO);
+        slot.p[q] = math::max(p, T::ZERO);
+        slot.g[q] = g;
+        sum += slot.a[q] * slot.p[q];
+    }
+    let strips_load = T::PI * T::HALF * sum * w;
+    if !(strips_load > T::ZERO) {
+        return Err(Error::GridTooSmall("table strips"));
+    }
+    let s = load / strips_load;
+    for p in slot.p.iter_mut() {
+        *p *= s;
+    }
+    Ok(())
+}
