@@ -1,0 +1,105 @@
+//! The real-time step (`wrc_kernel::step`) on an S1002/UIC60 contact table (1353 mm, right wheel,
+//! equilibrium roll, dy −8…4 mm in 0.25 mm × 15–260 kN in 5 log-spaced loads, 3 slots × 32
+//! strips), f64 and f32: table build time and size, and host time per step over 1000 states
+//! (dy over the table, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, nominal rolling at 100 km/h plus a
+//! lateral velocity and yaw rate): median / P99 / max.
+//!
+//! Run: `cargo run --release -p wrc-bench --example realtime_step`. For instruction counts:
+//! `valgrind --tool=callgrind --toggle-collect='*one_step*' target/release/examples/realtime_step`
+//! and divide the total by the steps printed.
+
+use std::hint::black_box;
+use std::time::Instant;
+use wrc_host_tests::profiles::{manchester_tables, SmoothOptions};
+use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelsetPose};
+use wrc_kernel::step::{step, StepInput, StepResult};
+use wrc_kernel::table::{build_table, table_bytes, ContactTable, TableSlot, TableSpec};
+use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
+use wrc_kernel::{Material, Real};
+
+const K: usize = 3;
+const ST: usize = 32;
+
+#[inline(never)]
+fn one_step<T: Real>(t: &ContactTable<'_, T>, i: &StepInput<T>) -> StepResult<T, K> {
+    step::<T, K, ST>(t, i).expect("state inside the table")
+}
+
+fn run<T: Real>(name: &str) {
+    let (w, r) = manchester_tables::<T>(&SmoothOptions::default()).expect("built-in profiles");
+    let spec = TableSpec {
+        dy_min: T::from_f64(-8.0),
+        dy_max: T::from_f64(4.0),
+        n_dy: 49,
+        f_min: T::from_f64(15_000.0),
+        f_max: T::from_f64(260_000.0),
+        n_load: 5,
+        grid_step: T::from_f64(0.05),
+        equilibrium_roll: true,
+    };
+    let setup = TrackSetup {
+        back_to_back: T::from_f64(1353.0),
+        ..TrackSetup::standard()
+    };
+    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, K, ST)];
+    let mut rows = vec![TableSlot::<T, ST>::EMPTY; 2 * K * spec.n_load];
+    let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
+    let speed = T::from_f64(100.0 / 3.6 * 1000.0);
+    let cfg = WheelConfig::recommended(T::from_f64(0.3), speed, T::from_f64(460.0));
+    let t0 = Instant::now();
+    let rep = build_table::<T, 2048, 2048, K, ST, 4, 128, 256, 4, 32, 32, 128>(
+        &r,
+        &w,
+        &setup,
+        Side::Right,
+        &Material::steel(),
+        &cfg,
+        &spec,
+        &mut rows,
+        &mut ws,
+        &mut out,
+    )
+    .expect("table build");
+    let build = t0.elapsed();
+    let table = ContactTable::<T>::from_bytes(&out).expect("valid table");
+    let mut times = vec![];
+    for q in 0..1000 {
+        let f = |a: f64, b: f64| (q as f64 * a + b).fract();
+        let dy = -7.9 + 11.8 * f(0.618_033_988_75, 0.1);
+        let inp = StepInput {
+            pose: WheelsetPose {
+                dy: T::from_f64(dy),
+                yaw: T::from_f64(0.01 * (2.0 * f(0.754_877_666, 0.2) - 1.0)),
+                roll: T::ZERO,
+            },
+            fz: T::from_f64(20_000.0 + 130_000.0 * f(0.569_840_29, 0.3)),
+            kinematics: Kinematics {
+                lateral_velocity: T::from_f64(100.0 * (2.0 * f(0.453_397_65, 0.4) - 1.0)),
+                yaw_rate: T::from_f64(0.02 * (2.0 * f(0.380_364_3, 0.5) - 1.0)),
+                ..Kinematics::nominal(speed, T::from_f64(460.0))
+            },
+            mu: T::from_f64(0.1 + 0.4 * f(0.324_717_957, 0.6)),
+        };
+        let s = Instant::now();
+        black_box(one_step(&table, black_box(&inp)));
+        times.push(s.elapsed().as_secs_f64() * 1e6);
+    }
+    times.sort_by(f64::total_cmp);
+    println!(
+        "{name}: table {} nodes ({} not converged, {} slots used) {} bytes, build {:.1} s; step over {} states: median {:.2} µs, P99 {:.2} µs, max {:.2} µs",
+        rep.nodes,
+        rep.not_converged,
+        rep.slots_used,
+        rep.bytes,
+        build.as_secs_f64(),
+        times.len(),
+        times[times.len() / 2],
+        times[times.len() * 99 / 100],
+        times[times.len() - 1]
+    );
+}
+
+fn main() {
+    run::<f64>("f64");
+    run::<f32>("f32");
+}
