@@ -40,7 +40,7 @@ use crate::{Material, Real};
 /// Fixed-point steps of the vertical balance per round.
 pub const BALANCE_STEPS: u32 = 4;
 /// Normal–tangential coupling rounds per call.
-pub const ROUNDS: u32 = 3;
+pub const ROUNDS: u32 = 2;
 
 /// One slot (contact patch) of a step result.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
