@@ -51,7 +51,8 @@ fn hertz_of<T: Real>(args: &SolveArgs, mat: &Material<T>) -> Result<HertzSolutio
 }
 
 /// A Hertz patch with `ns` strips and `nc` cells used out of the capacity `S` × `C` (the strips
-/// beyond `ns` are empty; cells beyond `nc` lie outside the ellipse).
+/// beyond `ns` are empty; cells beyond `nc` lie outside the ellipse), p̂ scaled so that the
+/// sampled pressure carries the Hertz load.
 pub fn hertz_patch<T: Real, const S: usize, const C: usize>(
     h: &HertzSolution<T>,
     mat: &Material<T>,
@@ -86,7 +87,10 @@ pub fn hertz_patch<T: Real, const S: usize, const C: usize>(
         s.p_hat = if root > T::ZERO { h.p0 * root } else { h.p0 };
     }
     let dx = T::TWO * h.a / T::from_usize(nc);
-    StripPatch::new(strips, -h.a, dx, *mat).map_err(|e| e.to_string())
+    let mut patch = StripPatch::new(strips, -h.a, dx, *mat).map_err(|e| e.to_string())?;
+    // the sampled pressure carries the reported load N, so |F| ≤ μN (issue 16)
+    patch.scale_to_load(h.load).map_err(|e| e.to_string())?;
+    Ok(patch)
 }
 
 /// Solves an elliptic case in precision `T` with capacity `S` × `C`.

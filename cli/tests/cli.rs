@@ -466,3 +466,32 @@ fn a_missing_profile_file_is_named_once() {
     assert_eq!(e.matches("/no/such/wheel.prw").count(), 1, "{e}");
     assert!(e.contains("cannot read"), "{e}");
 }
+
+/// Issue 16: FaStrip in full slip on the elliptic case reports |F| ≤ μF_n (it was 1.0019 μF_n:
+/// the cell-centre Hertz pressure carried 0.19 % more than F_n), and equal to μF_n to rounding.
+#[test]
+fn elliptic_full_slip_resultant_is_at_most_mu_fn() {
+    for eta in ["10", "-10"] {
+        let d = json(&[
+            "solve",
+            "--ellipse",
+            "6,4",
+            "--fn",
+            "80000",
+            "--xi",
+            "0",
+            "--eta",
+            eta,
+            "--phi",
+            "0",
+            "--json",
+        ]);
+        let p = &d["patches"][0];
+        let g = |k: &str| p[k].as_f64().unwrap();
+        let r = g("fx_n").hypot(g("fy_n")) / (0.3 * g("fn_n"));
+        assert!(
+            r <= 1.0 + 1e-12 && r > 1.0 - 1e-9,
+            "eta {eta}: |F|/(mu Fn) = {r}"
+        );
+    }
+}

@@ -433,3 +433,111 @@ fn f32_vs_f64() {
         cmp(&a, &b, "fastrip m6");
     }
 }
+
+/// Issue 16: with the pressure scaled to carry the patch's load ([`StripPatch::scale_to_load`]),
+/// FaStrip's resultant never exceeds μN — per strip (against μ times the strip's sampled load)
+/// and for the patch (against μN) — in full slip and over a sweep of creepages, on a Hertz patch
+/// (6 × 4 mm, 32 × 32, tight grid: before the scaling |F| = 1.0019 μN at η = 10) and on a
+/// non-elliptic one (two lobes, shifted strip centres, uneven p̂_j). To rounding: 1 + 1e-12.
+#[test]
+fn fastrip_resultant_never_exceeds_mu_n() {
+    use proptest::prelude::*;
+    use proptest::test_runner::{Config, TestRunner};
+    use wrc_kernel::patch::{GridExtent, SemiEllipticStrips, Strip};
+    let mat = contact_material::<f64>();
+    let (mut hertz, _) =
+        StripPatch::<f64, 32, 32>::hertz(6.0, 4.0, 80_000.0, &mat, GridExtent::tight()).unwrap();
+    // the sampled Hertz pressure carries more than N before the scaling
+    let f = hertz.scale_to_load(80_000.0).unwrap();
+    assert!(f < 0.999, "scale factor {f}");
+    // a non-elliptic patch: two lobes of strips, centres moving along y, uneven peaks
+    let template = Strip::default().with_reference(5.0, 4.0, &mat).unwrap();
+    let mut strips = [template; 32];
+    for (j, s) in strips.iter_mut().enumerate() {
+        let y = -8.0 + (j as f64 + 0.5) * 0.5;
+        let lobe = (1.0 - ((y.abs() - 4.0) / 3.5).powi(2)).max(0.0);
+        s.y = y;
+        s.dy = 0.5;
+        s.a = 5.0 * lobe.sqrt();
+        s.xc = 0.3 * y;
+        s.p_hat = if lobe > 0.0 {
+            900.0 * (0.6 + 0.4 * (0.7 * y).sin().abs())
+        } else {
+            1.0
+        };
+    }
+    let mut odd = StripPatch::<f64, 32, 32>::new(strips, -8.0, 0.5, mat).unwrap();
+    odd.scale_to_load(60_000.0).unwrap();
+    let check = |patch: &StripPatch<f64, 32, 32>, load: f64, cr: Creepage<f64>| {
+        let t = fastrip(
+            patch,
+            &SemiEllipticStrips,
+            &cr,
+            &FastripSettings::new(MU),
+            &mut (),
+        )
+        .unwrap();
+        assert!(
+            (t.total.fn_ / load - 1.0).abs() <= 1e-12,
+            "{} vs {load}",
+            t.total.fn_
+        );
+        for (j, s) in t.strips.iter().enumerate() {
+            let f = s.fx.hypot(s.fy);
+            assert!(
+                f <= MU * s.fn_ * (1.0 + 1e-12),
+                "{cr:?} strip {j}: |F| {f} > mu F_n {}",
+                MU * s.fn_
+            );
+        }
+        let f = t.total.fx.hypot(t.total.fy);
+        f / (MU * load)
+    };
+    for (patch, load) in [(&hertz, 80_000.0), (&odd, 60_000.0)] {
+        for cr in [
+            Creepage {
+                xi: 0.0,
+                eta: 10.0,
+                phi: 0.0,
+            },
+            Creepage {
+                xi: -10.0,
+                eta: 3.0,
+                phi: 0.0,
+            },
+            Creepage {
+                xi: 0.0,
+                eta: 10.0,
+                phi: 0.05,
+            },
+        ] {
+            let r = check(patch, load, cr);
+            assert!(r <= 1.0 + 1e-12, "{cr:?}: |F|/(mu N) = {r}");
+            if cr.phi == 0.0 {
+                // full slip without spin: all cells parallel, the resultant is μN
+                assert!(r > 1.0 - 1e-9, "{cr:?}: |F|/(mu N) = {r}");
+            }
+        }
+        let mut runner = TestRunner::new(Config {
+            cases: 256,
+            ..Config::default()
+        });
+        runner
+            .run(
+                &(-3.0f64..3.0, -3.0f64..3.0, -0.1f64..0.1, -3.0f64..1.0),
+                |(sx, sy, phi, lg)| {
+                    // |ξ|, |η| up to 1e-6…3e-2: from the linear limit to full slip
+                    let s = 1e-3 * 10f64.powf(lg);
+                    let cr = Creepage {
+                        xi: sx * s,
+                        eta: sy * s,
+                        phi: phi * s * 10.0,
+                    };
+                    let r = check(patch, load, cr);
+                    prop_assert!(r <= 1.0 + 1e-12, "{:?}: |F|/(mu N) = {}", cr, r);
+                    Ok(())
+                },
+            )
+            .unwrap();
+    }
+}

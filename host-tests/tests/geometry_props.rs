@@ -372,15 +372,21 @@ fn general_creepages_match_eq30_on_a_tread_case() {
     let f = ps.items[0].frame;
     let kin = Kinematics::nominal(2000.0, 460.0);
     let c = creepages(&g, &f, &kin).unwrap();
-    // effective radius of the reference point: distance from the axle (it sits on the rail)
+    // effective radius: distance from the (rolled, yawed) axle of the point where the wheel
+    // velocity is taken, Q = P − approach·n (the loaded wheel's surface on the normal through the
+    // rail reference point P; left wheel n = (0, −sin δ, cos δ))
     let centre_z = g.wheel.cz - f.approach_vertical;
-    // distance of the reference point from the (rolled, yawed) axle line
     let axle = [
         -pose.yaw.sin() * pose.roll.cos(),
         pose.yaw.cos() * pose.roll.cos(),
         pose.roll.sin(),
     ];
-    let rv = [f.x_ref, f.y_ref_track - pose.dy, f.z_ref_track - centre_z];
+    let q = [
+        f.x_ref,
+        f.y_ref_track + f.approach * f.angle.sin(),
+        f.z_ref_track - f.approach * f.angle.cos(),
+    ];
+    let rv = [q[0], q[1] - pose.dy, q[2] - centre_z];
     let along = rv[0] * axle[0] + rv[1] * axle[1] + rv[2] * axle[2];
     let rho = ((0..3)
         .map(|i| (rv[i] - along * axle[i]).powi(2))

@@ -289,20 +289,7 @@ pub fn region_patch<T: Real, const S: usize, const C: usize, const SS: usize, co
         mat: *mat,
     };
     // Rescale p̂ so the sampled pressure carries the region's load.
-    let mut sum = T::ZERO;
-    for j in 0..reg.count {
-        let s = patch.strips[j];
-        for i in 0..C {
-            sum += crate::patch::SemiEllipticStrips.pn(j, i, patch.x(i), &s) * dx * s.dy;
-        }
-    }
-    if sum <= T::ZERO {
-        return Err(Error::GridTooSmall("cells"));
-    }
-    let f = reg.load / sum;
-    for s in patch.strips.iter_mut().take(reg.count) {
-        s.p_hat *= f;
-    }
+    patch.scale_to_load(reg.load)?;
     apply(&mut patch, reg.count, reg.y_lo, reg.y_hi, &local[..], adapt)?;
     patch.validate()?;
     Ok(patch)

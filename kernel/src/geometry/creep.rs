@@ -11,9 +11,17 @@
 //! Normal: n = (0, −sin δ, cos δ) for the left wheel, (0, +sin δ, cos δ) for the right wheel,
 //! δ the patch contact angle in the track frame (it includes the roll).
 //!
-//! The point P is the patch reference point on the rail surface (as CONTACT: its wheel-side
-//! coordinates of the reference are the rail point expressed in the wheel profile, i.e. the
-//! profile radius minus the local overlap), and the wheelset centre is at its loaded position.
+//! Where the wheel velocity is taken (CONTACT module 1, `m_wr_rigslip.f90`, point Q; seed A
+//! eq. 30 with R the profile's rolling radius at the contact point): the patch reference point
+//! P (`x_ref`, `y_ref_track`, `z_ref_track`) lies on the rail surface, which does not move; the
+//! wheelset centre is at its loaded position (lowered by `approach_vertical` from touching), so
+//! the undeformed wheel interpenetrates the rail and its surface crosses the normal through P a
+//! distance `approach` (the patch's normal approach) *below* P. The wheel velocity is evaluated
+//! there, at Q = P − approach·n (n into the wheel). The lever arm |Q − c| is then the profile's
+//! rolling radius at the wheel point paired with P (`rolling_radius`, exactly so when P is the
+//! deepest point of the patch), independent of the load. Evaluating at P itself would shorten
+//! the lever arm by the approach and bias ξ by ≈ approach/R0 (≈ 1.9e-4 at 83 kN, 40 % of ξ in
+//! centred running on S1002/UIC60, issue 17.1).
 //!
 //! Seed A's approximation (eq. 30) is [`creepages_seed_a`]. It agrees with the general form to
 //! first order in the contact angle; in η the exact kinematics (wheel velocity in the tangent
@@ -130,17 +138,24 @@ pub fn creepages_at<T: Real>(
         kin.pitch_rate * axle[1],
         kin.pitch_rate * axle[2] + kin.yaw_rate,
     ];
-    // wheelset centre in T at the loaded position
-    let centre = [T::ZERO, pose.dy, wheel_cz - frame.approach_vertical];
-    let p = [frame.x_ref, frame.y_ref_track, frame.z_ref_track];
-    let r = [p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]];
-    let wr = cross(omega, r);
-    let v = [kin.speed + wr[0], kin.lateral_velocity + wr[1], wr[2]];
     let (sd, cd) = (math::sin(frame.angle), math::cos(frame.angle));
     let n = match side {
         Side::Left => [T::ZERO, -sd, cd],
         Side::Right => [T::ZERO, sd, cd],
     };
+    // wheelset centre in T at the loaded position (lowered by δ_v from touching)
+    let centre = [T::ZERO, pose.dy, wheel_cz - frame.approach_vertical];
+    // Q: the wheel surface point of the loaded (undeformed, interpenetrating) wheel on the normal
+    // through the rail reference point P, `approach` below P (see the module docs)
+    let pen = frame.approach;
+    let q = [
+        frame.x_ref - pen * n[0],
+        frame.y_ref_track - pen * n[1],
+        frame.z_ref_track - pen * n[2],
+    ];
+    let r = [q[0] - centre[0], q[1] - centre[1], q[2] - centre[2]];
+    let wr = cross(omega, r);
+    let v = [kin.speed + wr[0], kin.lateral_velocity + wr[1], wr[2]];
     let ex = [T::ONE, T::ZERO, T::ZERO];
     let ey = cross(n, ex);
     let vn = match kin.normalisation {
