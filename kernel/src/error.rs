@@ -19,6 +19,12 @@ pub enum Error {
     TooManyRegions,
     /// A profile table is malformed (too few points, non-monotone lateral coordinate, …).
     BadProfile(&'static str),
+    /// The wheel is off the rail: at this lateral shift the wheel's rigid contact point lies on
+    /// the top of its flange (within [`crate::geometry::FLANGE_TIP_BAND`] of the flange tip's
+    /// height, past the steepest point of the flank) or beyond the tip on the flange-back side,
+    /// i.e. the wheel has been lifted by the whole flange height (the shift is beyond the
+    /// flange contact the profiles describe).
+    Derailed,
 }
 
 impl core::fmt::Display for Error {
@@ -31,6 +37,10 @@ impl core::fmt::Display for Error {
             Error::NoContact => write!(f, "no contact: wheel and rail do not touch"),
             Error::TooManyRegions => write!(f, "more contact regions than the capacity"),
             Error::BadProfile(w) => write!(f, "bad profile: {w}"),
+            Error::Derailed => write!(
+                f,
+                "wheel off the rail: the contact lies on the flange tip or beyond it (lateral shift too large)"
+            ),
         }
     }
 }
