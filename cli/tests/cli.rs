@@ -495,3 +495,27 @@ fn elliptic_full_slip_resultant_is_at_most_mu_fn() {
         );
     }
 }
+
+/// Issue 16: a wheel shifted onto its flange tip or beyond (dy 50, 100 mm) and a load past the
+/// profiles' range (10 MN) fail with one line naming the cause, not "converged" or "no contact".
+#[test]
+fn off_rail_and_overload_name_their_cause() {
+    for (args, want) in [
+        (vec!["solve", "--dy", "50"], "wheel off the rail"),
+        (
+            vec!["solve", "--dy", "100", "--side", "left"],
+            "wheel off the rail",
+        ),
+        (vec!["solve", "--fz", "1e7"], "load too large"),
+    ] {
+        let o = wrc(&args);
+        assert!(!o.status.success(), "{args:?} succeeded");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+        assert!(!err.contains("no contact"), "{args:?}: {err}");
+    }
+    // a normal flange-contact shift still solves
+    let d = json(&["solve", "--dy", "8", "--json"]);
+    assert_eq!(d["status"]["converged"], true);
+}

@@ -22,6 +22,12 @@ pub enum Error {
     /// A contact table's bytes are wrong, truncated or damaged ([`crate::table`]); the payload
     /// names the check that failed.
     BadTable(&'static str),
+    /// The wheel is off the rail: at this lateral shift the wheel's rigid contact point lies on
+    /// the top of its flange (within [`crate::geometry::FLANGE_TIP_BAND`] of the flange tip's
+    /// height, past the steepest point of the flank) or beyond the tip on the flange-back side,
+    /// i.e. the wheel has been lifted by the whole flange height (the shift is beyond the
+    /// flange contact the profiles describe).
+    Derailed,
 }
 
 impl core::fmt::Display for Error {
@@ -35,6 +41,10 @@ impl core::fmt::Display for Error {
             Error::TooManyRegions => write!(f, "more contact regions than the capacity"),
             Error::BadProfile(w) => write!(f, "bad profile: {w}"),
             Error::BadTable(w) => write!(f, "bad contact table: {w}"),
+            Error::Derailed => write!(
+                f,
+                "wheel off the rail: the contact lies on the flange tip or beyond it (lateral shift too large)"
+            ),
         }
     }
 }

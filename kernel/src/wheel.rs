@@ -936,7 +936,9 @@ enum Target<T> {
 /// module docs.
 ///
 /// Errors: `NonPositive("fz")`, `NoContact` when no δ_v up to 5 mm brings the profiles into
-/// contact, and the errors of geometry, STRIPES and the pipeline.
+/// contact, `OutOfRange(`[`crate::geometry::LOAD_BEYOND_PROFILES`]`)` when the load presses the
+/// patch past a profile's end, and the errors of geometry (e.g. `Derailed`), STRIPES and the
+/// pipeline.
 #[allow(clippy::too_many_arguments)]
 pub fn solve_wheel<
     T: Real,

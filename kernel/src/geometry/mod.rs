@@ -35,9 +35,9 @@ pub use creep::{creepages, creepages_at, creepages_seed_a, Creepages, Kinematics
 pub use isosceles::{isosceles_rigid_pair, IsoscelesPair};
 pub use patch::{
     contact_patches, patches_at_normal_approach, sample_patch, Correspondence, Patch, PatchFrame,
-    PatchOptions, PatchSamples, Patches, ReferenceRule,
+    PatchOptions, PatchSamples, Patches, ReferenceRule, LOAD_BEYOND_PROFILES,
 };
 pub use placement::{
     equilibrium_roll, Equilibrium, PlacedRail, PlacedWheel, RailPoint, Side, TrackSetup,
-    WheelPoint, WheelRail, WheelsetPose,
+    WheelPoint, WheelRail, WheelsetPose, FLANGE_TIP_BAND,
 };

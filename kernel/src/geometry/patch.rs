@@ -376,9 +376,15 @@ fn crossing<T: Real, const N: usize, const M: usize>(
     ya + math::clamp(u, T::ZERO, T::ONE) * (yb - ya)
 }
 
+/// Payload of the `OutOfRange` error of [`contact_patches`] when a patch reaches past the end of
+/// a profile (the approach, i.e. the load, is too large for the profiles' range).
+pub const LOAD_BEYOND_PROFILES: &str =
+    "approach: the contact patch reaches past the profiles' range (load too large)";
+
 /// Contact patches of one wheel at vertical approach `dv` (mm, > 0). See the module docs.
 ///
 /// Errors: `NoContact` if `dv ≤ 0` (the wheel is lifted or only touches) or no row overlaps;
+/// `OutOfRange(`[`LOAD_BEYOND_PROFILES`]`)` if a patch's samples reach past a profile's end;
 /// `TooManyRegions` if more than `K` patches remain after combining; `OutOfRange("samples")` if
 /// `opts.samples` is not in 4..=S; `NonFinite` for non-finite inputs.
 pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, const S: usize>(
@@ -562,6 +568,9 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
         let m = math::max(opts.margin * w, opts.min_margin);
         let s_lo = p.frame.overlap_s[0] - m;
         let s_hi = p.frame.overlap_s[1] + m;
+        // The overlap exists, so wheel and rail touch: a sample outside either profile means
+        // the patch (overlap plus margin) reaches past a profile's end — the approach, i.e. the
+        // load, is too large for the profiles' range, not a missing contact.
         sample_patch(
             geom,
             &mut p.frame,
@@ -570,7 +579,11 @@ pub fn contact_patches<T: Real, const N: usize, const M: usize, const K: usize, 
             opts.samples,
             opts.correspondence,
             &mut p.samples,
-        )?;
+        )
+        .map_err(|e| match e {
+            Error::NoContact => Error::OutOfRange(LOAD_BEYOND_PROFILES),
+            e => e,
+        })?;
         out.len = k + 1;
     }
     Ok(())

@@ -768,6 +768,54 @@ fn monotone_window<T: Real, F: FnMut(usize) -> T>(
     (lo, hi)
 }
 
+/// Height band below the flange tip (mm of radius) in which a wheel contact point past the
+/// steepest point of the flank counts as riding on the flange top ([`Error::Derailed`]).
+///
+/// On S1002/UIC60 (1360 mm, no yaw) the rigid contact climbs the rounded flange as the shift
+/// grows past flange contact (dy ≈ 7 mm, tilt 1.22 rad): 0.37 mm below the tip at dy 30 (tilt
+/// 0.25 rad), 0.10 at dy 40, 0.014 at dy 50 (tilt 0.05 rad), beyond the tip at dy 100. Within
+/// 0.1 mm the flange crown is nearly flat (tilt ≲ 0.13 rad) and the wheel has been lifted by its
+/// flange height; climbing states below the band are still solved (a derailment simulation needs
+/// them).
+pub const FLANGE_TIP_BAND: f64 = 0.1;
+
+/// Whether the wheel point at curve parameter `t` lies on the flange top or beyond the flange
+/// tip: the tip is the node of largest radius increase z on the flange side of the tape circle
+/// (nodes `k0..=k_tape`), the steepest flank point the node of largest |tilt| between the tip and
+/// the tape circle.
+fn on_flange_top<T: Real, const N: usize>(
+    wheel: &PlacedWheel<'_, T, N>,
+    t: T,
+    k0: usize,
+    k_tape: usize,
+) -> bool {
+    let tb = wheel.table;
+    let hi = k_tape.min(tb.len.saturating_sub(1)).min(N - 1);
+    if k0 >= hi {
+        return false;
+    }
+    let mut k_tip = k0;
+    for k in k0..=hi {
+        if tb.z[k] > tb.z[k_tip] {
+            k_tip = k;
+        }
+    }
+    let mut k_steep = k_tip;
+    for k in k_tip..=hi {
+        if math::abs(tb.angle[k]) > math::abs(tb.angle[k_steep]) {
+            k_steep = k;
+        }
+    }
+    let tip = T::from_usize(k_tip);
+    if t <= tip {
+        return true;
+    }
+    if t >= T::from_usize(k_steep) {
+        return false;
+    }
+    tb.z[k_tip] - tb.point(t).z <= math::c(FLANGE_TIP_BAND)
+}
+
 /// Moves the node bracket [k, k+1] of a curve forward (never back) until its node values
 /// `fk = (f(k), f(k+1))` enclose `target`, within nodes `0..len` of a non-decreasing stretch.
 /// Returns `false` if `target` lies outside the stretch.
@@ -894,7 +942,10 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
     /// over the lateral range common to both profiles.
     ///
     /// Errors: invalid tables or inputs (`BadProfile`, `NonFinite`, `OutOfRange`), no lateral
-    /// overlap of the profiles (`NoContact`), `M < 8` (`GridTooSmall`).
+    /// overlap of the profiles (`NoContact`), `M < 8` (`GridTooSmall`); a lateral shift the
+    /// profiles do not describe: the touching point at an end of their common range
+    /// (`OutOfRange("lateral shift: …")`), or on the flange top / beyond the flange tip
+    /// (`Derailed`, see [`FLANGE_TIP_BAND`]).
     pub fn place(
         rail: &'a ProfileTable<T, N>,
         wheel: &'a ProfileTable<T, N>,
@@ -1174,6 +1225,17 @@ impl<'a, T: Real, const N: usize, const M: usize> WheelRail<'a, T, N, M> {
                 gmin = gj;
                 jmin = j;
             }
+        }
+        // The touching point must be a true minimum of the gap inside the profiles' common
+        // range: at either end of the grid the gap still falls outwards, so the contact lies
+        // outside the range both profiles cover.
+        if jmin == 0 || jmin + 1 >= n {
+            return Err(Error::OutOfRange(
+                "lateral shift: contact at the end of the profiles' common range",
+            ));
+        }
+        if on_flange_top(&wheel, self.wheel_t[jmin], wk0, k_tape) {
+            return Err(Error::Derailed);
         }
         // parabolic refinement of the minimum
         let (mut fmin, mut p) = (gmin, T::ZERO);
