@@ -710,7 +710,13 @@ pub fn strip_forces<T: Real>(
     }
     if t > T::ZERO {
         // slip zone: θ ∈ [0, θ₁], x̄ = −a cos θ, p_n dx̄ = p̂ a sin²θ dθ
+        // θ₁ = 2 asin √t: sin θ₁ = 2√(t(1 − t)), cos θ₁ = 1 − 2t (no trigonometric calls)
         let th1 = T::TWO * math::asin(math::sqrt(t));
+        let sn1 = T::TWO * math::sqrt(math::max(T::ZERO, t * (T::ONE - t)));
+        let cs1 = T::ONE - T::TWO * t;
+        // ∫ sin²θ dθ and ∫ −a cos θ sin²θ dθ over [0, θ₁]
+        let i0 = th1 * T::HALF - sn1 * cs1 * T::HALF;
+        let ix = -a * sn1 * sn1 * sn1 / c::<T>(3.0);
         let wx = cr.xi - cr.phi * s.y;
         let k = mu * s.p_hat * a;
         // Slip-zone traction μ p_n (1 − β) u_s + μ p_n β u_w: u_s = (κ, λ)/|(κ, λ)| the strip
@@ -736,9 +742,6 @@ pub fn strip_forces<T: Real>(
             None
         };
         if let Some((ux, uy)) = us {
-            let i0 = th1 * T::HALF - math::sin(T::TWO * th1) * c::<T>(0.25);
-            let sn = math::sin(th1);
-            let ix = -a * sn * sn * sn / c::<T>(3.0);
             let kb = k * (T::ONE - beta);
             fx += kb * i0 * ux;
             fy += kb * i0 * uy;
@@ -750,9 +753,6 @@ pub fn strip_forces<T: Real>(
                 let mw = math::hypot(wx, cr.eta);
                 if mw > T::ZERO {
                     let (ux, uy) = (-wx / mw, -cr.eta / mw);
-                    let i0 = th1 * T::HALF - math::sin(T::TWO * th1) * c::<T>(0.25);
-                    let sn = math::sin(th1);
-                    let ix = -a * sn * sn * sn / c::<T>(3.0);
                     fx += kw * i0 * ux;
                     fy += kw * i0 * uy;
                     xpy += kw * ix * uy;
