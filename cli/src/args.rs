@@ -17,8 +17,10 @@ pub struct Cli {
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Solve one contact case (elliptic or wheel/rail).
+    #[command(allow_negative_numbers = true)]
     Solve(SolveArgs),
     /// The lateral-shift sweep of An et al. (2019): every shift with all six simplified models.
+    #[command(allow_negative_numbers = true)]
     Sweep(SweepArgs),
 }
 
@@ -136,10 +138,14 @@ pub struct Common {
 /// Wheel/rail case options.
 #[derive(Args, Debug, Clone, Serialize)]
 pub struct WheelRail {
-    /// Wheel profile (.prw or two-column file).
+    /// Wheel profile (.prw or two-column file "y z"; default: built-in S1002). Two-column files in
+    /// CONTACT's canonical orientation: mm, y positive towards the field side, z positive downwards
+    /// (the increase of the rolling radius), so the flange tip is the largest z, at negative y.
     #[arg(long)]
     pub wheel: Option<PathBuf>,
-    /// Rail profile (.prr or two-column file).
+    /// Rail profile (.prr or two-column file "y z"; default: built-in UIC60). Two-column files in
+    /// CONTACT's canonical orientation: mm, y positive towards the field side (gauge face at
+    /// negative y), z positive downwards, so the rail top is the smallest z.
     #[arg(long)]
     pub rail: Option<PathBuf>,
     /// Lateral wheelset shift, mm, positive towards the analysed wheel (its flange approaches the
@@ -203,6 +209,9 @@ pub struct SolveArgs {
     /// Write SVG plots (pressure, traction with stick/slip, slip velocity, wear) into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// The long names of the options given on the command line (filled in by `main`).
+    #[arg(skip)]
+    pub given: Vec<String>,
 }
 
 /// `wrc sweep`.
@@ -232,4 +241,7 @@ pub struct SweepArgs {
     /// Write SVG plots into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// The long names of the options given on the command line (filled in by `main`).
+    #[arg(skip)]
+    pub given: Vec<String>,
 }

@@ -120,7 +120,8 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
             ))
         }
     }
-    let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
+    let mat =
+        Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(crate::validate::kernel_msg)?;
     let cr = Creepage {
         xi: t(cm.xi.unwrap_or(0.0)),
         eta: t(cm.eta.unwrap_or(0.0)),
@@ -223,7 +224,7 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
     if ns > S || nc > C || ns < 4 || nc < 4 {
         return Err(format!("grid {ns} x {nc} outside 4..={S} x 4..={C}"));
     }
-    let mat64 = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(|e| e.to_string())?;
+    let mat64 = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(crate::validate::kernel_msg)?;
     let h = hertz_of::<f64>(args, &mat64)?;
     let (ca, cb) = (h.curv_a, h.curv_b);
     let control = if args.approach.is_some() {
@@ -252,7 +253,8 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         .map_err(|e| format!("NORM: {e}"))?;
     let g = sol.grid;
     // kernel strips from the NORM rows
-    let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
+    let mat =
+        Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(crate::validate::kernel_msg)?;
     let template = Strip::default()
         .with_reference(t(h.a), t(h.b), &mat)
         .map_err(|e| e.to_string())?;
@@ -374,7 +376,7 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
             "grid {ny} x {nx} too small for TANG (at least 4 x 4)"
         ));
     }
-    let mat = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(|e| e.to_string())?;
+    let mat = Material::<f64>::identical(cm.e_mpa, cm.nu).map_err(crate::validate::kernel_msg)?;
     let h = hertz_of::<f64>(args, &mat)?;
     let cr = wrc_host_tests::tang::Creepage {
         xi: cm.xi.unwrap_or(0.0),

@@ -4,20 +4,24 @@ mod args;
 mod doc;
 mod elliptic;
 mod exact;
+mod orientation;
 mod plot;
 mod sink;
 mod sweep;
 mod timing;
+mod validate;
 mod wheelrail;
 mod wr_reference;
 
 use args::{Cli, Command, Precision, SolveArgs};
-use clap::Parser;
+use clap::{CommandFactory, FromArgMatches};
 use doc::Document;
 use serde_json::json;
+use std::fmt::Write as _;
+use std::io::Write as _;
 
 /// Capacity buckets the command line is compiled for (strips and cells used ≤ capacity).
-const MAX_GRID: usize = 128;
+pub(crate) const MAX_GRID: usize = 128;
 
 /// Calls `$f::<T, N, N>` with the smallest square capacity N ∈ {16, 32, 64, 128} that holds the grid.
 macro_rules! dispatch {
@@ -40,7 +44,8 @@ fn inputs_json(a: &SolveArgs) -> serde_json::Value {
         "curvatures_per_mm": a.curvatures,
         "fn_n": a.fn_n,
         "approach_mm": a.approach,
-        "wheel": a.wr.wheel, "rail": a.wr.rail,
+        "wheel": (!elliptic).then(|| wheelrail::profile_name(a.wr.wheel.as_deref(), true)),
+        "rail": (!elliptic).then(|| wheelrail::profile_name(a.wr.rail.as_deref(), false)),
         "dy_mm": a.wr.dy, "yaw_mrad": a.wr.yaw, "roll_mrad": a.wr.roll, "fz_n": a.wr.fz,
         "side": a.wr.side, "gauge_mm": a.wr.gauge, "gauge_depth_mm": a.wr.gauge_depth,
         "back_to_back_mm": a.wr.back_to_back.unwrap_or(1360.0), "cant_rad": a.wr.cant, "r0_mm": a.wr.r0,
@@ -54,15 +59,80 @@ fn inputs_json(a: &SolveArgs) -> serde_json::Value {
             args::Normal::Stripes
         }),
         "flex": c.flex.unwrap_or(if elliptic { args::Flex::Hertz } else { args::Flex::Ac }),
+        "model": sweep::model_name(c.tangential, c.flex.unwrap_or(if elliptic { args::Flex::Hertz } else { args::Flex::Ac })),
         "tangential": c.tangential, "strips": c.strips, "cells": c.cells, "precision": c.precision,
     })
 }
 
+/// The case in plot titles: the geometry (dy, yaw or the ellipse), the load and the models.
+fn case_title(a: &SolveArgs) -> String {
+    let c = &a.common;
+    let v = inputs_json(a);
+    let name = |k: &str| v[k].as_str().unwrap_or("").to_string();
+    let models = format!(
+        "{}, {}-{}",
+        name("normal"),
+        name("tangential"),
+        name("flex")
+    );
+    if let Some([ea, eb]) = a.ellipse {
+        let load = match (a.fn_n, a.approach) {
+            (Some(f), _) => format!("F_n {f} N"),
+            (_, Some(d)) => format!("approach {d} mm"),
+            _ => String::new(),
+        };
+        format!("ellipse {ea}×{eb} mm, {load}, {models}")
+    } else if let Some([ca, cb]) = a.curvatures {
+        let load = match (a.fn_n, a.approach) {
+            (Some(f), _) => format!("F_n {f} N"),
+            (_, Some(d)) => format!("approach {d} mm"),
+            _ => String::new(),
+        };
+        format!("curvatures {ca},{cb} 1/mm, {load}, {models}")
+    } else {
+        let _ = c;
+        format!(
+            "dy {} mm, yaw {} mrad, F_z {} N, {}, {models}",
+            a.wr.dy,
+            a.wr.yaw,
+            a.wr.fz,
+            format!("{:?}", a.wr.side).to_lowercase()
+        )
+    }
+}
+
+/// Writes `s` to stdout; a closed pipe (`wrc sweep | head`) ends the program quietly with
+/// status 0, as the reader asked for no more.
+pub(crate) fn out(s: &str) -> Result<(), String> {
+    let mut o = std::io::stdout().lock();
+    match o.write_all(s.as_bytes()).and_then(|_| o.flush()) {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => std::process::exit(0),
+        Err(e) => Err(format!("stdout: {e}")),
+    }
+}
+
+/// Highest maximum pressure reported without a warning, MPa (several times the yield stress of
+/// rail steel: the elastic half-space results are meaningless beyond it).
+const PMAX_PLAUSIBLE_MPA: f64 = 5000.0;
+
+/// Warnings for results that are legal but implausible; printed on stderr and kept in the JSON.
+fn plausibility(doc: &mut Document) {
+    let pmax = doc.patches.iter().map(|p| p.pmax_mpa).fold(0.0, f64::max);
+    if pmax > PMAX_PLAUSIBLE_MPA {
+        doc.status.warnings.push(format!(
+            "pmax {pmax:.4e} MPa exceeds {PMAX_PLAUSIBLE_MPA} MPa, far beyond the elastic limit of \
+             steel: check the load (--fn/--fz) and the geometry"
+        ));
+    }
+    for w in &doc.status.warnings {
+        eprintln!("wrc: warning: {w}");
+    }
+}
+
 fn solve(a: &SolveArgs) -> Result<(), String> {
     let c = &a.common;
-    if c.strips > MAX_GRID || c.cells > MAX_GRID {
-        return Err(format!("--strips and --cells must be at most {MAX_GRID}"));
-    }
+    validate::check_solve(a)?;
     let n = c.strips.max(c.cells);
     let keep = a.plot.is_some();
     if a.ellipse.is_some() || a.curvatures.is_some() {
@@ -71,16 +141,20 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
             Precision::F32 => dispatch!(elliptic::solve, f32, n, a, keep),
         }?;
         if let Some(dir) = &a.plot {
-            plot::write_all(dir, &s.cells, s.cell_mm.0, s.cell_mm.1, &s.wear_strips)?;
+            plot::write_all(
+                dir,
+                &case_title(a),
+                &s.cells,
+                s.cell_mm.0,
+                s.cell_mm.1,
+                &s.wear_strips,
+            )?;
         }
         emit(
             a,
             &Document::new(inputs_json(a), vec![s.patch], s.status, s.time_us),
         )
     } else {
-        if ![16, 32, 64].contains(&c.cells) {
-            return Err("--cells must be 16, 32 or 64 for wheel/rail cases".into());
-        }
         let s = match (c.precision, c.cells) {
             (Precision::F64, 16) => wheelrail::solve::<f64, 16>(a, keep),
             (Precision::F64, 32) => wheelrail::solve::<f64, 32>(a, keep),
@@ -90,7 +164,14 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
             (Precision::F32, _) => wheelrail::solve::<f32, 64>(a, keep),
         }?;
         if let Some(dir) = &a.plot {
-            plot::write_all(dir, &s.cells, s.cell_mm.0, s.cell_mm.1, &s.wear_strips)?;
+            plot::write_all(
+                dir,
+                &case_title(a),
+                &s.cells,
+                s.cell_mm.0,
+                s.cell_mm.1,
+                &s.wear_strips,
+            )?;
         }
         emit(
             a,
@@ -100,19 +181,22 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
 }
 
 fn emit(a: &SolveArgs, doc: &Document) -> Result<(), String> {
+    let mut doc = doc.clone();
+    plausibility(&mut doc);
     if a.json {
-        println!(
-            "{}",
-            serde_json::to_string_pretty(doc).map_err(|e| e.to_string())?
-        );
+        out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&doc).map_err(|e| e.to_string())?
+        ))
     } else {
-        print_table(doc);
+        out(&table(&doc))
     }
-    Ok(())
 }
 
-fn print_table(d: &Document) {
-    println!(
+fn table(d: &Document) -> String {
+    let mut s = String::new();
+    writeln!(
+        s,
         "{:>5} {:>9} {:>9} {:>8} {:>10} {:>10} {:>10} {:>12} {:>9} {:>9} {:>6} {:>9}",
         "patch",
         "y_ref",
@@ -126,27 +210,45 @@ fn print_table(d: &Document) {
         "area",
         "stick",
         "wear"
-    );
-    println!(
+    )
+    .ok();
+    writeln!(
+        s,
         "{:>5} {:>9} {:>9} {:>8} {:>10} {:>10} {:>10} {:>12} {:>9} {:>9} {:>6} {:>9}",
-        "", "mm", "rad", "mm", "N", "N", "N", "N mm", "MPa", "mm2", "-", "um"
-    );
+        "", "mm", "rad", "mm", "N", "N", "N", "N mm", "MPa", "mm2", "-", "µm"
+    )
+    .ok();
     for (k, p) in d.patches.iter().enumerate() {
-        println!(
+        writeln!(
+            s,
             "{:>5} {:>9.3} {:>9.5} {:>8.5} {:>10.1} {:>10.2} {:>10.2} {:>12.1} {:>9.1} {:>9.2} {:>6.3} {:>9.3e}",
             k, p.y_ref_mm, p.contact_angle_rad, p.approach_mm, p.fn_n, p.fx_n, p.fy_n, p.mz_nmm,
             p.pmax_mpa, p.area_mm2, p.stick_area_fraction, p.wear_depth_max_um
-        );
+        )
+        .ok();
     }
     let t = &d.total;
-    println!(
-        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; converged {}, kernel time {:.1} us",
+    writeln!(
+        s,
+        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; converged {}, kernel time {:.1} µs",
         t.fn_n, t.fx_n, t.fy_n, t.mz_nmm, d.status.converged, d.time_us
-    );
+    )
+    .ok();
+    s
 }
 
 fn main() {
-    let cli = Cli::parse();
+    let cmd = Cli::command();
+    let m = cmd.clone().get_matches();
+    let mut cli = Cli::from_arg_matches(&m).unwrap_or_else(|e| e.exit());
+    if let Some((name, sm)) = m.subcommand() {
+        let sub = cmd.find_subcommand(name).expect("parsed subcommand exists");
+        let given = validate::given(sub, sm);
+        match &mut cli.command {
+            Command::Solve(a) => a.given = given,
+            Command::Sweep(a) => a.given = given,
+        }
+    }
     let r = match &cli.command {
         Command::Solve(a) => solve(a),
         Command::Sweep(a) => sweep::run(a),

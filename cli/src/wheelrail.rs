@@ -8,7 +8,8 @@ use crate::sink::PlotCell;
 use crate::timing::median_time_us;
 use std::path::Path;
 use wrc_host_tests::profiles::{
-    build_table, build_table_from_text, SmoothOptions, S1002_NAME, S1002_PRW, UIC60_NAME, UIC60_PRR,
+    build_table, build_table_from_text, read_profile, SmoothOptions, S1002_NAME, S1002_PRW,
+    UIC60_NAME, UIC60_PRR,
 };
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
@@ -45,7 +46,12 @@ fn table<T: Real>(
 ) -> Result<Box<ProfileTable<T, NODES>>, String> {
     let opts = SmoothOptions::default();
     match path {
-        Some(p) => build_table::<T, NODES>(p, Some(kind), &opts),
+        Some(p) => {
+            let raw = read_profile(p, Some(kind)).map_err(|e| e.to_string())?;
+            crate::orientation::check(&raw.points, kind)
+                .map_err(|e| format!("{}: {e}", p.display()))?;
+            build_table::<T, NODES>(p, Some(kind), &opts)
+        }
         None => {
             let (text, name) = match kind {
                 ProfileKind::Wheel => (S1002_PRW, S1002_NAME),
@@ -57,6 +63,28 @@ fn table<T: Real>(
     .map_err(|e| e.to_string())
 }
 
+/// The profile as reported in the JSON inputs: the file given, or the built-in profile's name and
+/// its source in the repository.
+pub fn profile_name(path: Option<&Path>, wheel: bool) -> String {
+    match path {
+        Some(p) => p.display().to_string(),
+        None if wheel => format!("built-in S1002 (data/profiles/{S1002_NAME})"),
+        None => format!("built-in UIC60 (data/profiles/{UIC60_NAME})"),
+    }
+}
+
+/// A short profile name for plot titles: the file name, or S1002/UIC60 for the built-ins.
+pub fn profile_short(path: Option<&Path>, wheel: bool) -> String {
+    match path {
+        Some(p) => p
+            .file_name()
+            .map(|f| f.to_string_lossy().into_owned())
+            .unwrap_or_else(|| p.display().to_string()),
+        None if wheel => "S1002".into(),
+        None => "UIC60".into(),
+    }
+}
+
 /// Per-patch statistics from the cells.
 struct Stats {
     patch: usize,
@@ -64,6 +92,12 @@ struct Stats {
     speed: f64,
     per: Vec<PatchStats>,
     cells: Vec<PlotCell>,
+    /// Relative slip |s| of each kept cell (for its wear once the cell length is known).
+    slips: Vec<f64>,
+    /// Last cell of the first patch (strip j, cell i, x) and the cell length δx found from
+    /// consecutive cells of one strip.
+    last: Option<(usize, usize, f64)>,
+    cell_dx: f64,
 }
 
 #[derive(Clone, Default)]
@@ -76,7 +110,7 @@ struct PatchStats {
 }
 
 impl<T: Real> CellSink<T> for Stats {
-    fn cell(&mut self, _j: usize, _i: usize, o: &CellOut<T>) {
+    fn cell(&mut self, j: usize, i: usize, o: &CellOut<T>) {
         while self.per.len() <= self.patch {
             self.per.push(PatchStats {
                 x: [f64::MAX, f64::MIN],
@@ -96,8 +130,17 @@ impl<T: Real> CellSink<T> for Stats {
         }
         p.x = [p.x[0].min(x), p.x[1].max(x)];
         p.y = [p.y[0].min(y), p.y[1].max(y)];
+        if self.patch == 0 {
+            if let Some((lj, li, lx)) = self.last {
+                if lj == j && i > li && self.cell_dx == 0.0 {
+                    self.cell_dx = (x - lx).abs() / (i - li) as f64;
+                }
+            }
+            self.last = Some((j, i, x));
+        }
         if self.keep && self.patch == 0 {
             let s = o.sx.to_f64().hypot(o.sy.to_f64());
+            self.slips.push(s);
             self.cells.push(PlotCell {
                 x,
                 y,
@@ -143,17 +186,14 @@ pub(crate) fn prepare<T: Real>(args: &SolveArgs) -> Result<Prepared<T>, String> 
     setup.cant = t(wr.cant);
     setup.r0 = t(wr.r0);
     // --dy and --yaw are taken towards the analysed wheel (An et al. 2019, methods.md §7.1):
-    // CONTACT's y_ws (to the right) for the right wheel, mirrored for the left wheel.
-    let (side, mirror) = match wr.side {
-        ArgSide::Left => (Side::Left, -1.0),
-        ArgSide::Right => (Side::Right, 1.0),
+    // the kernel's named constructor for that convention (CONTACT's y_ws for the right wheel).
+    let side = match wr.side {
+        ArgSide::Left => Side::Left,
+        ArgSide::Right => Side::Right,
     };
-    let pose = WheelsetPose::from_contact(
-        t(mirror * wr.dy),
-        t(mirror * wr.yaw * 1e-3),
-        t(wr.roll * 1e-3),
-    );
-    let mat = Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(|e| e.to_string())?;
+    let pose = WheelsetPose::towards_wheel(side, t(wr.dy), t(wr.yaw * 1e-3), t(wr.roll * 1e-3));
+    let mat =
+        Material::<T>::identical(t(cm.e_mpa), t(cm.nu)).map_err(crate::validate::kernel_msg)?;
     let speed = cm.speed * 1e3;
     let mut cfg = WheelConfig::recommended(t(cm.mu), t(speed), t(wr.r0));
     cfg.creepage = match (cm.xi, cm.eta, cm.phi) {
@@ -232,6 +272,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         speed,
         per: vec![],
         cells: vec![],
+        slips: vec![],
+        last: None,
+        cell_dx: 0.0,
     };
     let res = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut stats).map_err(|e| e.to_string())?;
     let mut patches = vec![];
@@ -283,10 +326,23 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         .first()
         .map(|p| {
             let (x0, x1) = (p.x[0], p.x[1]);
-            let dx = ((x1 - x0) / (C as f64 - 1.0)).max(1e-6);
+            let dx = if stats.cell_dx > 0.0 {
+                stats.cell_dx
+            } else {
+                ((x1 - x0) / (C as f64 - 1.0)).max(1e-6)
+            };
             (dx, p.dx / dx)
         })
         .unwrap_or((0.1, 0.1));
+    // wear of each plotted cell: the kernel's KTH map on the cell's pressure and slip over δx
+    let map = wrc_kernel::wear::WearMap::<f64>::kth();
+    for (c, &s) in stats.cells.iter_mut().zip(&stats.slips) {
+        c.wear_um = if c.slip {
+            map.cell_depth(c.pn, s, speed, cell_mm.0).0 * 1e3
+        } else {
+            0.0
+        };
+    }
     let mut warnings = vec![];
     if !res.converged {
         warnings.push("the load or frame iteration did not reach its tolerance".to_string());

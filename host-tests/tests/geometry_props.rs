@@ -851,3 +851,35 @@ fn place_in_and_reposition_equal_place() {
     assert!(g.place_in(&r, &w, &setup, &p0, Side::Right, -1.0).is_err());
     assert_eq!(g.n, 0);
 }
+
+/// `WheelsetPose::towards_wheel` (the command line's and An et al.'s convention): a positive
+/// shift towards the analysed wheel brings that wheel's contact towards its flange, on either
+/// side, and the left wheel at +s is the mirror image of the right wheel at +s.
+#[test]
+fn shift_towards_the_wheel_moves_its_contact_to_the_flange() {
+    let (w, r) = tables();
+    for side in [Side::Right, Side::Left] {
+        let at = |s: f64| {
+            let pose = WheelsetPose::towards_wheel(side, s, 1.2e-3 * s, 0.0);
+            let g = place(&r, &w, pose, side);
+            let mut pp = Box::new(Patches::<f64, 4, 48>::new());
+            let opts = PatchOptions {
+                samples: 48,
+                ..PatchOptions::default()
+            };
+            contact_patches(&g, 0.025, &opts, &mut pp).unwrap();
+            (0..pp.len)
+                .map(|k| pp.items[k].frame.angle.abs())
+                .fold(0.0, f64::max)
+        };
+        // the flange's contact angle is far steeper than the tread's
+        assert!(at(8.0) > 0.5, "{side:?}: {}", at(8.0));
+        assert!(at(-4.0) < 0.1, "{side:?}: {}", at(-4.0));
+    }
+    let r_pose = WheelsetPose::towards_wheel(Side::Right, 3.0, 3.6e-3, 1e-3);
+    let l_pose = WheelsetPose::towards_wheel(Side::Left, 3.0, 3.6e-3, 1e-3);
+    assert_eq!(r_pose.dy, -3.0, "right wheel: towards it is −y_T");
+    assert_eq!(l_pose.dy, 3.0, "left wheel: towards it is +y_T");
+    assert_eq!((r_pose.yaw, l_pose.yaw), (-3.6e-3, 3.6e-3));
+    assert_eq!((r_pose.roll, l_pose.roll), (1e-3, 1e-3));
+}

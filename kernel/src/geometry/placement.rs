@@ -127,6 +127,19 @@ impl<T: Real> WheelsetPose<T> {
         }
     }
 
+    /// From a shift and yaw taken **towards the analysed wheel**, the convention of An et al.
+    /// (2019) and of the `wrc` command line (`--dy`, `--yaw`): a positive `shift_mm` moves the
+    /// wheelset towards `side`, bringing that wheel's flange towards its rail's gauge face, and a
+    /// positive `yaw_rad` is the yaw that goes with it in the seed's cases (yaw = 1.2·dy mrad).
+    /// For the right wheel this is CONTACT's (y_ws, yaw_C), for the left wheel its mirror image.
+    /// `roll_rad` is in the track frame (positive raises the left wheel) for either side.
+    pub fn towards_wheel(side: Side, shift_mm: T, yaw_rad: T, roll_rad: T) -> Self {
+        match side {
+            Side::Right => Self::from_contact(shift_mm, yaw_rad, roll_rad),
+            Side::Left => Self::from_contact(-shift_mm, -yaw_rad, roll_rad),
+        }
+    }
+
     /// The mirror image (x–z plane): left wheel at `self` ≡ right wheel at `self.mirrored()`.
     pub fn mirrored(&self) -> Self {
         WheelsetPose {
