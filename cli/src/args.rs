@@ -22,6 +22,9 @@ pub enum Command {
     /// The lateral-shift sweep of An et al. (2019): every shift with all six simplified models.
     #[command(allow_negative_numbers = true)]
     Sweep(SweepArgs),
+    /// Build the contact table of one profile pair and side for the real-time step.
+    #[command(allow_negative_numbers = true)]
+    Table(TableArgs),
 }
 
 /// Normal-contact model.
@@ -209,6 +212,10 @@ pub struct SolveArgs {
     /// Write SVG plots (pressure, traction with stick/slip, slip velocity, wear) into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Run the fixed-cost real-time step on this contact table (built by `wrc table`) instead of
+    /// the converged solver; the options the table fixes must agree with it or be omitted.
+    #[arg(long, conflicts_with_all = ["ellipse", "curvatures"])]
+    pub table: Option<PathBuf>,
     /// The long names of the options given on the command line (filled in by `main`).
     #[arg(skip)]
     pub given: Vec<String>,
@@ -241,6 +248,52 @@ pub struct SweepArgs {
     /// Write SVG plots into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// The long names of the options given on the command line (filled in by `main`).
+    #[arg(skip)]
+    pub given: Vec<String>,
+}
+
+/// `wrc table`.
+#[derive(Args, Debug, Clone)]
+pub struct TableArgs {
+    /// Profiles and track set-up (the shift, yaw, roll and load options are not used: the table
+    /// spans them).
+    #[command(flatten)]
+    pub wr: WheelRail,
+    /// Lowest lateral shift, mm, towards the analysed wheel (as `solve --dy`).
+    #[arg(long = "dy-from", default_value_t = -4.0, allow_hyphen_values = true)]
+    pub dy_from: f64,
+    /// Highest lateral shift, mm.
+    #[arg(long = "dy-to", default_value_t = 8.0, allow_hyphen_values = true)]
+    pub dy_to: f64,
+    /// Shift step between table nodes, mm.
+    #[arg(long = "dy-step", default_value_t = 0.25)]
+    pub dy_step: f64,
+    /// Lowest vertical load of the table, N.
+    #[arg(long = "fz-min", default_value_t = 15_000.0)]
+    pub fz_min: f64,
+    /// Highest vertical load of the table, N.
+    #[arg(long = "fz-max", default_value_t = 260_000.0)]
+    pub fz_max: f64,
+    /// Load nodes, log-spaced between --fz-min and --fz-max.
+    #[arg(long, default_value_t = 5)]
+    pub loads: usize,
+    /// Build every shift at the two-wheel equilibrium roll of the wheelset (as a free wheelset
+    /// takes it) instead of roll 0 (as `wrc solve` without `--roll`).
+    #[arg(long = "equilibrium-roll")]
+    pub equilibrium_roll: bool,
+    /// Young's modulus of wheel and rail, MPa.
+    #[arg(long = "e-mpa", default_value_t = 205_900.0)]
+    pub e_mpa: f64,
+    /// Poisson ratio of wheel and rail.
+    #[arg(long, default_value_t = 0.28)]
+    pub nu: f64,
+    /// Precision of the table's values.
+    #[arg(long, value_enum, default_value = "f64")]
+    pub precision: Precision,
+    /// The table file to write.
+    #[arg(long)]
+    pub out: PathBuf,
     /// The long names of the options given on the command line (filled in by `main`).
     #[arg(skip)]
     pub given: Vec<String>,

@@ -6,6 +6,7 @@ mod elliptic;
 mod exact;
 mod orientation;
 mod plot;
+mod realtime;
 mod sink;
 mod sweep;
 mod timing;
@@ -133,6 +134,9 @@ fn plausibility(doc: &mut Document) {
 fn solve(a: &SolveArgs) -> Result<(), String> {
     let c = &a.common;
     validate::check_solve(a)?;
+    if a.table.is_some() {
+        return realtime::solve(a);
+    }
     let n = c.strips.max(c.cells);
     let keep = a.plot.is_some();
     if a.ellipse.is_some() || a.curvatures.is_some() {
@@ -247,11 +251,13 @@ fn main() {
         match &mut cli.command {
             Command::Solve(a) => a.given = given,
             Command::Sweep(a) => a.given = given,
+            Command::Table(a) => a.given = given,
         }
     }
     let r = match &cli.command {
         Command::Solve(a) => solve(a),
         Command::Sweep(a) => sweep::run(a),
+        Command::Table(a) => realtime::build(a),
     };
     if let Err(e) = r {
         eprintln!("wrc: error: {e}");

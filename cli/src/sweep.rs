@@ -136,6 +136,7 @@ pub fn run(a: &SweepArgs) -> Result<(), String> {
                 common,
                 json: a.json,
                 plot: None,
+                table: None,
                 given: vec![],
             };
             if k == 0 && mi == 0 {

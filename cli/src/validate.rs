@@ -2,7 +2,7 @@
 //! command line takes is checked against the range stated in its message, options that have no
 //! effect in the chosen case are errors, and kernel error names are mapped to the flags.
 
-use crate::args::{Common, Normal, SolveArgs, Tangential};
+use crate::args::{Common, Normal, SolveArgs, TableArgs, Tangential};
 
 /// Options of the wheel/rail case (long names); none of them affects an elliptic case.
 pub const WHEEL_RAIL_FLAGS: [&str; 12] = [
@@ -181,6 +181,76 @@ pub fn check_solve(a: &SolveArgs) -> Result<(), String> {
             ));
         }
     }
+    Ok(())
+}
+
+/// Checks a `table` build: grid ranges and sizes, material, track set-up.
+pub fn check_table(a: &TableArgs) -> Result<(), String> {
+    let has = |f: &str| a.given.iter().any(|g| g == f);
+    for f in ["dy", "yaw", "roll", "fz"] {
+        if has(f) {
+            return Err(format!(
+                "--{f} has no effect on `wrc table` (the table spans shift and load: use \
+                 --dy-from/--dy-to/--dy-step and --fz-min/--fz-max/--loads)"
+            ));
+        }
+    }
+    within("dy-from", a.dy_from, -40.0, 40.0, " mm")?;
+    within("dy-to", a.dy_to, -40.0, 40.0, " mm")?;
+    if a.dy_to <= a.dy_from {
+        return Err(format!(
+            "--dy-to {} must exceed --dy-from {}",
+            a.dy_to, a.dy_from
+        ));
+    }
+    positive(
+        "dy-step",
+        a.dy_step,
+        a.dy_to - a.dy_from,
+        " mm",
+        "shift step, mm",
+    )?;
+    let n = ((a.dy_to - a.dy_from) / a.dy_step).round() + 1.0;
+    if !(2.0..=4096.0).contains(&n) {
+        return Err(format!(
+            "--dy-step {} gives {n} shift nodes: accepted 2..=4096",
+            a.dy_step
+        ));
+    }
+    positive("fz-min", a.fz_min, 1e7, " N", "lowest vertical load, N")?;
+    positive("fz-max", a.fz_max, 1e7, " N", "highest vertical load, N")?;
+    if a.fz_max <= a.fz_min {
+        return Err(format!(
+            "--fz-max {} must exceed --fz-min {}",
+            a.fz_max, a.fz_min
+        ));
+    }
+    if !(2..=256).contains(&a.loads) {
+        return Err(format!(
+            "--loads {} is out of range: accepted 2..=256",
+            a.loads
+        ));
+    }
+    positive("e-mpa", a.e_mpa, 1e7, " MPa", "Young's modulus, MPa")?;
+    if !(a.nu.is_finite() && (0.0..0.5).contains(&a.nu)) {
+        return Err(format!(
+            "--nu {} is out of range: accepted 0 <= --nu < 0.5 (Poisson ratio)",
+            a.nu
+        ));
+    }
+    positive("gauge", a.wr.gauge, 3000.0, " mm", "track gauge, mm")?;
+    positive("r0", a.wr.r0, 2000.0, " mm", "nominal rolling radius, mm")?;
+    if let Some(b) = a.wr.back_to_back {
+        positive(
+            "back-to-back",
+            b,
+            3000.0,
+            " mm",
+            "back-to-back distance, mm",
+        )?;
+    }
+    within("gauge-depth", a.wr.gauge_depth, 0.0, 50.0, " mm")?;
+    within("cant", a.wr.cant, -0.5, 0.5, " rad")?;
     Ok(())
 }
 

@@ -19,7 +19,7 @@ use wrc_kernel::wheel::{solve_wheel, WheelConfig, WheelSink, WheelWorkspace};
 use wrc_kernel::{Material, Real};
 
 /// Profile capacity (nodes) of the command line.
-const NODES: usize = 2048;
+pub(crate) const NODES: usize = 2048;
 
 /// Everything a solved wheel/rail case reports.
 pub struct Solved {
@@ -40,7 +40,7 @@ pub struct Solved {
 /// Builds the table of a profile: the file given on the command line, or the built-in Manchester
 /// S1002 wheel / UIC60 rail (`data/profiles/`, compiled into the binary so that `wrc` works from any
 /// directory and after `cargo install`).
-fn table<T: Real>(
+pub(crate) fn table<T: Real>(
     path: Option<&Path>,
     kind: ProfileKind,
 ) -> Result<Box<ProfileTable<T, NODES>>, String> {
