@@ -1,6 +1,6 @@
 //! The real-time step (`wrc_kernel::step`) on a contact table (`wrc_kernel::table`) against the
 //! converged per-wheel solver it was built from (issue 14): S1002/UIC60, back-to-back 1353 mm,
-//! right wheel, equilibrium roll, yaw 0, loads 25–150 kN, μ 0.3, 100 km/h nominal rolling.
+//! right wheel, the table at the equilibrium roll, 1000 states with yaw ±10 mrad, loads 25–150 kN, μ 0.3, 100 km/h nominal rolling.
 //! Also: the byte format's checks (a damaged, truncated or foreign table is `BadTable`), bad
 //! inputs, determinism, continuity in the shift.
 
@@ -17,6 +17,8 @@ const K: usize = 3;
 const ST: usize = 32;
 const MU: f64 = 0.3;
 const GRID: f64 = 0.05;
+/// States of the accuracy sweep against the converged solver.
+const STATES: usize = 1000;
 
 fn setup() -> TrackSetup<f64> {
     TrackSetup {
@@ -83,8 +85,11 @@ fn totals(r: &StepResult<f64, K>) -> (f64, f64, f64) {
     (fx, fy, n)
 }
 
-#[test]
-fn realtime_step_against_the_converged_solver() {
+/// Median / P95 / max of |ΔF|/(μF_z), |ΔN|/F_z, |Δpmax|/pmax and |Δarea|/area of the real-time
+/// step against the converged solver over `STATES` quasi-random states: dy −7.9 … 3.9 mm (the
+/// table's −8 … 4 mm), F_z 25 … 150 kN, yaw uniform in ±`yaw_amp` rad, the equilibrium roll.
+type Stats = (f64, f64, f64);
+fn sweep(yaw_amp: f64) -> [Stats; 4] {
     let (w, r) = tables().unwrap();
     let bytes = build(&w, &r);
     let t = ContactTable::<f64>::from_bytes(&bytes).unwrap();
@@ -92,16 +97,19 @@ fn realtime_step_against_the_converged_solver() {
     let cfg = WheelConfig::recommended(MU, SWEEP_SPEED, R0);
     let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     let (mut df, mut dn, mut dp, mut da) = (vec![], vec![], vec![], vec![]);
-    for q in 0..60 {
+    let mut worst = (0.0, String::new());
+    for q in 0..STATES {
         // deterministic quasi-random states (golden-ratio sequences)
         let u = (q as f64 * 0.618_033_988_75 + 0.1).fract();
         let v = (q as f64 * 0.754_877_666_2 + 0.3).fract();
+        let wy = (q as f64 * 0.569_840_290_998 + 0.5).fract();
         let dy = -7.9 + 11.8 * u;
         let fz = 25_000.0 + 125_000.0 * v;
+        let yaw = yaw_amp * (2.0 * wy - 1.0);
         let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup(), dy, 0.0, GRID)
             .unwrap()
             .roll;
-        let pose = WheelsetPose { dy, yaw: 0.0, roll };
+        let pose = WheelsetPose { dy, yaw, roll };
         let geom =
             WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup(), &pose, Side::Right, GRID)
                 .unwrap();
@@ -120,34 +128,53 @@ fn realtime_step_against_the_converged_solver() {
         let gp = rt.slots.iter().map(|s| s.pmax).fold(0.0, f64::max);
         let ga: f64 = rt.slots.iter().map(|s| s.area).sum();
         let e_f = ((gx - fx).powi(2) + (gy - fy).powi(2)).sqrt() / (MU * fz);
-        let e_n = (gn - n).abs() / fz;
         df.push(e_f);
-        dn.push(e_n);
+        dn.push((gn - n).abs() / fz);
         dp.push((gp - pm).abs() / pm);
         da.push((ga - ar).abs() / ar);
-        eprintln!(
-            "dy {dy:+.3} fz {fz:.0}: F ref ({fx:.0},{fy:.0}) rt ({gx:.0},{gy:.0}) dF {:.3}% dN {:.3}% pmax {:.2}% area {:.2}%",
-            100.0 * e_f,
-            100.0 * e_n,
-            100.0 * dp.last().unwrap(),
-            100.0 * da.last().unwrap()
-        );
+        if e_f > worst.0 {
+            worst = (
+                e_f,
+                format!("dy {dy:+.3} yaw {yaw:+.4} fz {fz:.0}: F ref ({fx:.0},{fy:.0}) rt ({gx:.0},{gy:.0})"),
+            );
+        }
     }
     let stat = |v: &mut Vec<f64>| {
         v.sort_by(f64::total_cmp);
         (v[v.len() / 2], v[v.len() * 95 / 100], v[v.len() - 1])
     };
-    let (sf, sn, sp, sa) = (stat(&mut df), stat(&mut dn), stat(&mut dp), stat(&mut da));
-    eprintln!("|dF|/(mu Fz) median/P95/max {sf:?}\n|dN|/Fz {sn:?}\npmax {sp:?}\narea {sa:?}");
-    // Issue 14's targets that hold on every state: |dN|/Fz <= 0.5 %, area <= 3 %.
+    let out = [stat(&mut df), stat(&mut dn), stat(&mut dp), stat(&mut da)];
+    eprintln!(
+        "yaw ±{yaw_amp}: |dF|/(mu Fz) median/P95/max {:?}\n|dN|/Fz {:?}\npmax {:?}\narea {:?}\nworst force: {}",
+        out[0], out[1], out[2], out[3], worst.1
+    );
+    out
+}
+
+/// Issue 14's accuracy against the converged solver, 1000 states with yaw within ±3 mrad:
+/// |ΔN|/F_z ≤ 0.5 % and area ≤ 3 % on every state (measured max 0.06 %, 2.4 %); force and pmax
+/// at P95 (1 % of μF_z, 3 %; measured 0.72 %, 0.66 %). The maxima (force 5.1 %, pmax 50 %) are
+/// all at the region split, dy −3.72 … −3.55 mm, interpolated between nodes on either side of
+/// the split.
+#[test]
+fn realtime_step_against_the_converged_solver() {
+    let [sf, sn, sp, sa] = sweep(0.003);
     assert!(sn.2 <= 0.005, "normal load {sn:?}");
     assert!(sa.2 <= 0.03, "area {sa:?}");
-    // Force and pmax: the targets (1 % of mu Fz, 3 %) hold at the median; the maxima do not yet
-    // (flange contact with large spin: FaStrip's closed form against the cell FaStrip, up to
-    // 4.3 %; pmax at the region split near dy -3.5 mm, 12.5 %, interpolated between nodes on
-    // either side of the split). Asserted at the median until those are closed (issue 14).
+    assert!(sf.1 <= 0.01, "force P95 {sf:?}");
+    assert!(sp.1 <= 0.03, "pmax P95 {sp:?}");
+}
+
+/// The same at yaw within ±10 mrad (curving): the table is built at yaw 0 and the step moves the
+/// contact point with yaw (first order) but not the gap, which yaw changes at second order: the
+/// load and area still hold on every state (measured max 0.34 %, 2.4 %); the force does at the
+/// median (0.35 %), not at P95 (3.3 %; max 22 % at the region split).
+#[test]
+fn realtime_step_at_large_yaw() {
+    let [sf, sn, _sp, sa] = sweep(0.01);
+    assert!(sn.2 <= 0.005, "normal load {sn:?}");
+    assert!(sa.2 <= 0.03, "area {sa:?}");
     assert!(sf.0 <= 0.01, "force median {sf:?}");
-    assert!(sp.0 <= 0.03, "pmax median {sp:?}");
 }
 
 #[test]
@@ -296,15 +323,12 @@ fn closed_form_strip_forces_match_fastrip_on_a_fine_hertz_grid() {
             "{xi:e} {eta:e} {phi:e}: fastrip ({:.1},{:.1},{:.0}) closed ({fx:.1},{fy:.1},{mz:.0})",
             r.total.fx, r.total.fy, r.total.mz
         );
-        // Within 1 % of mu N of the cell FaStrip, except pure spin beyond the linear range: at
-        // phi = 1e-3 the closed form gives F_y 7.9 % of mu N below (the strips that the
-        // strip theory puts in full slip, or whose adhesion traction exceeds the bound, slip
-        // against the rigid slip here and carry FASTSIM's tractions there): a known gap of the
-        // real-time step (issue 14), not asserted.
-        if phi < 1e-3 {
-            assert!((fx - r.total.fx).abs() <= 0.01 * n, "fx");
-            assert!((fy - r.total.fy).abs() <= 0.01 * n, "fy");
-        }
+        // Within 0.2 % of mu N of the cell FaStrip (measured ≤ 0.1 %) up to phi = 2e-4; at pure
+        // spin phi = 1e-3 (far beyond the linear range) 1.0 % (F_y), the same with 8 or 32
+        // slip-zone intervals: the rest is the cell grid. 1.2 % there.
+        let tol = if phi < 1e-3 { 0.002 } else { 0.012 };
+        assert!((fx - r.total.fx).abs() <= tol * n, "fx");
+        assert!((fy - r.total.fy).abs() <= tol * n, "fy");
         // the resultant never exceeds mu N
         assert!(fx.hypot(fy) <= n * (1.0 + 1e-12));
     }
