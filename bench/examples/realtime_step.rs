@@ -1,5 +1,5 @@
 //! The real-time step (`wrc_kernel::step`) on an S1002/UIC60 contact table (1353 mm, right wheel,
-//! equilibrium roll, dy −8…4 mm in 0.25 mm × 15–260 kN in 5 log-spaced loads, 3 slots × 32
+//! equilibrium roll, dy −8…4 mm in 0.25 mm × 15–260 kN in 5 log-spaced loads, 3 slots × 16
 //! strips), f64 and f32: table build time and size, and host time per step over 1000 states
 //! (dy over the table, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, nominal rolling at 100 km/h plus a
 //! lateral velocity and yaw rate): median / P99 / max.
@@ -18,7 +18,7 @@ use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Material, Real};
 
 const K: usize = 3;
-const ST: usize = 32;
+const ST: usize = 16;
 
 #[inline(never)]
 fn one_step<T: Real>(t: &ContactTable<'_, T>, i: &StepInput<T>) -> StepResult<T, K> {

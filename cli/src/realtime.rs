@@ -19,7 +19,7 @@ use wrc_kernel::{Material, Real};
 /// Slots per table node built by `wrc table` and the step's slot capacity for `--table`.
 pub const SLOTS: usize = 3;
 /// Strips per slot built by `wrc table`.
-pub const STRIPS: usize = 32;
+pub const STRIPS: usize = 16;
 /// The step's strip capacity for `--table` (tables with up to this many strips run).
 const STRIP_CAP: usize = 64;
 
