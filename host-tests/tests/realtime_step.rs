@@ -98,6 +98,7 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
     let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     let (mut df, mut dn, mut dp, mut da) = (vec![], vec![], vec![], vec![]);
     let mut worst = (0.0, String::new());
+    let mut worst_p = (0.0, String::new());
     for q in 0..STATES {
         // deterministic quasi-random states (golden-ratio sequences)
         let u = (q as f64 * 0.618_033_988_75 + 0.1).fract();
@@ -132,6 +133,12 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
         dn.push((gn - n).abs() / fz);
         dp.push((gp - pm).abs() / pm);
         da.push((ga - ar).abs() / ar);
+        if dp[dp.len() - 1] > worst_p.0 {
+            worst_p = (
+                dp[dp.len() - 1],
+                format!("dy {dy:+.3} yaw {yaw:+.4} fz {fz:.0}: pmax ref {pm:.1} rt {gp:.1}"),
+            );
+        }
         if e_f > worst.0 {
             worst = (
                 e_f,
@@ -145,17 +152,19 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
     };
     let out = [stat(&mut df), stat(&mut dn), stat(&mut dp), stat(&mut da)];
     eprintln!(
-        "yaw ±{yaw_amp}: |dF|/(mu Fz) median/P95/max {:?}\n|dN|/Fz {:?}\npmax {:?}\narea {:?}\nworst force: {}",
-        out[0], out[1], out[2], out[3], worst.1
+        "yaw ±{yaw_amp}: |dF|/(mu Fz) median/P95/max {:?}\n|dN|/Fz {:?}\npmax {:?}\narea {:?}\nworst force: {}\nworst pmax: {}",
+        out[0], out[1], out[2], out[3], worst.1, worst_p.1
     );
     out
 }
 
 /// Issue 14's accuracy against the converged solver, 1000 states with yaw within ±3 mrad:
-/// |ΔN|/F_z ≤ 0.5 % and area ≤ 3 % on every state (measured max 0.06 %, 2.4 %); force and pmax
-/// at P95 (1 % of μF_z, 3 %; measured 0.83 %, 0.66 %). The maxima (force 5.1 %, pmax 50 %) are
-/// all at the region split, dy −3.72 … −3.55 mm, interpolated between nodes on either side of
-/// the split.
+/// |ΔN|/F_z ≤ 0.5 % and area ≤ 3 % on every state (measured max 0.04 %, 2.4 %); force and pmax
+/// at P95 (1 % of μF_z, 3 %; measured 0.75 %, 0.50 %). The maxima miss the targets: force 1.42 %
+/// (flange root, dy −5.7 mm), pmax 8.6 % (dy −3.37 mm, where pmax/F^{1/3} is not linear between
+/// the nodes 0.25 mm apart); they are asserted at 2 % and 10 % so that a slot mismatch (a patch
+/// changing slot between nodes: 50 % and 5 % before the slots were continued by prediction)
+/// cannot return.
 #[test]
 fn realtime_step_against_the_converged_solver() {
     let [sf, sn, sp, sa] = sweep(0.003);
@@ -163,12 +172,14 @@ fn realtime_step_against_the_converged_solver() {
     assert!(sa.2 <= 0.03, "area {sa:?}");
     assert!(sf.1 <= 0.01, "force P95 {sf:?}");
     assert!(sp.1 <= 0.03, "pmax P95 {sp:?}");
+    assert!(sf.2 <= 0.02, "force max {sf:?}");
+    assert!(sp.2 <= 0.10, "pmax max {sp:?}");
 }
 
 /// The same at yaw within ±10 mrad (curving): the table is built at yaw 0 and the step moves the
 /// contact point with yaw (first order) but not the gap, which yaw changes at second order: the
 /// load and area still hold on every state (measured max 0.36 %, 2.4 %); the force does at the
-/// median (0.38 %), not at P95 (3.0 %; max 23 % at the region split).
+/// median (0.37 %), not at P95 (2.9 %; max 23 %, dy −4.15 mm at ψ = 9.6 mrad and 28 kN).
 #[test]
 fn realtime_step_at_large_yaw() {
     let [sf, sn, _sp, sa] = sweep(0.01);

@@ -20,9 +20,10 @@
 //!
 //! # Slots and continuity
 //! Patches are assigned to slots by continuation: nodes are visited dy-major; each patch goes to
-//! the slot whose reference point (rail-file y) at the neighbouring node (previous dy, same load;
-//! else same dy, previous load) is nearest, within [`crate::wheel::MATCH_MM`]; a new patch takes
-//! a free slot. A slot without a patch at a node has load share 0 and zero strips, and carries
+//! the slot whose reference point (rail-file y) at the neighbouring node (previous dy, same load,
+//! predicted linearly from the two previous shifts — it moves up to ~12 mm per mm of shift on
+//! S1002/UIC60; else same dy, previous load) is nearest, within [`crate::wheel::MATCH_MM`],
+//! slots continuing a neighbouring node's patch first; a new patch takes a free slot. A slot without a patch at a node has load share 0 and zero strips, and carries
 //! the frame of its nearest node with a patch, so that interpolation fades a patch in and out
 //! continuously (the load goes to 0, the frame does not jump).
 //!
@@ -380,6 +381,9 @@ impl NodeWriter<'_> {
 #[derive(Clone, Copy, Debug)]
 pub struct TableSlot<T, const ST: usize> {
     present: bool,
+    /// The slot's rail-file y at the previous shift node, if it had a patch there (continuation
+    /// by linear prediction).
+    before: Option<T>,
     fixed: [T; SLOT_FIXED],
     a: [T; ST],
     p: [T; ST],
@@ -390,6 +394,7 @@ impl<T: Real, const ST: usize> TableSlot<T, ST> {
     /// Empty scratch slot.
     pub const EMPTY: Self = Self {
         present: false,
+        before: None,
         fixed: [T::ZERO; SLOT_FIXED],
         a: [T::ZERO; ST],
         p: [T::ZERO; ST],
@@ -503,12 +508,22 @@ pub fn build_table<
             let f13 = math::cbrt(f);
             let f23 = f13 * f13;
             fixed[j] = [roll, geom.wheel.cz, res.vertical_approach / f23];
-            // candidates: previous shift, same load; else same shift, previous load; else last
+            // candidates: previous shift, same load (predicted linearly from the two previous
+            // shifts where the slot had a patch at both: the reference point can move several mm
+            // per mm of shift); else same shift, previous load; else last
             let mut cand: [Option<T>; K] = [None; K];
+            // whether the candidate continues a patch of the neighbouring node (preferred over a
+            // slot's last position elsewhere in the table)
+            let mut live = [false; K];
             for k in 0..K {
                 let p = &prev[j * K + k];
+                live[k] = p.present || (j > 0 && cur[(j - 1) * K + k].present);
                 cand[k] = if p.present {
-                    Some(p.fixed[SlotField::YRefRail as usize])
+                    let y = p.fixed[SlotField::YRefRail as usize];
+                    Some(match p.before {
+                        Some(yb) => y + y - yb,
+                        None => y,
+                    })
                 } else if j > 0 && cur[(j - 1) * K + k].present {
                     Some(cur[(j - 1) * K + k].fixed[SlotField::YRefRail as usize])
                 } else {
@@ -525,17 +540,23 @@ pub fn build_table<
                     continue;
                 }
                 let y = wp.frame.y_ref_rail;
-                // nearest free candidate within MATCH_MM, else the first free slot never used,
-                // else the first free slot
+                // nearest free candidate within MATCH_MM continuing a neighbouring node's patch,
+                // else the nearest within MATCH_MM of a slot's last position, else the first free
+                // slot never used, else the first free slot
                 let mut best: Option<(usize, T)> = None;
-                for k in 0..K {
-                    if taken[k] {
-                        continue;
+                for want_live in [true, false] {
+                    if best.is_some() {
+                        break;
                     }
-                    if let Some(yc) = cand[k] {
-                        let d = math::abs(yc - y);
-                        if d <= math::c(MATCH_MM) && best.is_none_or(|(_, b)| d < b) {
-                            best = Some((k, d));
+                    for k in 0..K {
+                        if taken[k] || live[k] != want_live {
+                            continue;
+                        }
+                        if let Some(yc) = cand[k] {
+                            let d = math::abs(yc - y);
+                            if d <= math::c(MATCH_MM) && best.is_none_or(|(_, b)| d < b) {
+                                best = Some((k, d));
+                            }
                         }
                     }
                 }
@@ -551,6 +572,8 @@ pub fn build_table<
                 rep.slots_used = rep.slots_used.max(k + 1);
                 let mut slot = TableSlot::EMPTY;
                 slot.present = true;
+                let pk = &prev[j * K + k];
+                slot.before = pk.present.then(|| pk.fixed[SlotField::YRefRail as usize]);
                 let fr = &wp.frame;
                 slot.fixed[SlotField::Share as usize] = wp.load / f;
                 slot.fixed[SlotField::Angle as usize] = fr.angle;
