@@ -1,4 +1,4 @@
-//! Non-elliptic adaptations (kernel/src/adapt.rs) on a STRIPES Hertz patch: each must reduce to its
+//! Non-elliptic adaptations (kernel/src/tangential/adapt.rs) on a STRIPES Hertz patch: each must reduce to its
 //! documented Hertz-patch behaviour (methods.md §5), and the six models saturate at μN.
 
 use wrc_kernel::adapt::{self, AcFlexLength, Adaptation, KpBeta, LocalEllipse, Method};

@@ -1,4 +1,4 @@
-//! The default pipeline (kernel/src/pipeline.rs) on a Hertzian gap: STRIPES + FaStrip-AC equals the
+//! The default pipeline (kernel/src/wheel/pipeline.rs) on a Hertzian gap: STRIPES + FaStrip-AC equals the
 //! Hertzian FaStrip of the same ellipse; wear per strip equals an independent host integration of
 //! the KTH/Archard law over the reported cells; f32 agrees with f64.
 

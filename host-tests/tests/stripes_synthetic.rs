@@ -1,4 +1,4 @@
-//! STRIPES (kernel/src/stripes.rs) on synthetic gaps: Hertz exactness, load control, regions and
+//! STRIPES (kernel/src/normal/stripes.rs) on synthetic gaps: Hertz exactness, load control, regions and
 //! continuity of forces, pmax and area in the lateral shift (0.01 mm steps).
 
 use wrc_kernel::hertz;

@@ -11,25 +11,26 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod adapt;
-pub mod error;
-pub mod fastrip;
-pub mod fastsim;
+// The modules follow the data flow of one wheel's contact:
+// geometry (profiles, placement, patches, creepages, contact tables) → normal contact (Hertz,
+// STRIPES) → flexibilities and tangential contact (Kalker, adaptations, FASTSIM, FaStrip) → wear →
+// the per-wheel solve (converged) and the real-time step (fixed cost, `wheel::step`).
 pub mod geometry;
-pub mod hertz;
-pub mod hertz_table;
-pub mod kalker;
-pub mod material;
-pub mod math;
-pub mod patch;
-pub mod pipeline;
-pub mod profile;
-pub mod real;
-pub mod step;
-pub mod stripes;
-pub mod table;
+pub mod normal;
+pub mod tangential;
 pub mod wear;
 pub mod wheel;
+
+pub mod error;
+pub mod material;
+pub mod math;
+pub mod real;
+
+// Short paths (`wrc_kernel::stripes`, `wrc_kernel::step`, …) for the modules of the folders above.
+pub use geometry::{profile, table};
+pub use normal::{hertz, hertz_table, stripes};
+pub use tangential::{adapt, fastrip, fastsim, kalker, patch};
+pub use wheel::{pipeline, step};
 
 pub use error::Error;
 pub use material::Material;

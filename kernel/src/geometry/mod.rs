@@ -30,6 +30,8 @@ pub mod creep;
 pub mod isosceles;
 pub mod patch;
 pub mod placement;
+pub mod profile;
+pub mod table;
 
 pub use creep::{creepages, creepages_at, creepages_seed_a, Creepages, Kinematics, Normalisation};
 pub use isosceles::{isosceles_rigid_pair, IsoscelesPair};

@@ -172,7 +172,11 @@
 //! pass; the result reports the passes used and whether both loops met their tolerances
 //! (`converged`); a non-converged result is still the last consistent state (finite), flagged.
 //! Comparisons are written as `!(x > 0)` on purpose where NaN must count as "not positive".
+
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub mod pipeline;
+pub mod step;
 
 use crate::error::{check_positive, Error};
 use crate::geometry::{
