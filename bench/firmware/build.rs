@@ -1,4 +1,5 @@
-//! Finds the repository's `memory.x` and links with cortex-m-rt's `link.x` on thumb targets.
+//! Finds the repository's `memory.x` and links with cortex-m-rt's `link.x` on thumb targets;
+//! checks that the host-generated sources and contact tables are present (see `firmware-expected`).
 
 use std::path::PathBuf;
 
@@ -15,9 +16,14 @@ fn main() {
     println!("cargo:rerun-if-changed={}", expected.display());
     let profiles = manifest.join("src").join("profiles.rs");
     println!("cargo:rerun-if-changed={}", profiles.display());
-    if !expected.is_file() || !profiles.is_file() {
+    let tables = ["table_f32.bin", "table_f64.bin"].map(|f| manifest.join("src").join(f));
+    for t in &tables {
+        println!("cargo:rerun-if-changed={}", t.display());
+    }
+    if !expected.is_file() || !profiles.is_file() || tables.iter().any(|t| !t.is_file()) {
         panic!(
-            "{} or profiles.rs is missing: generate them on the host with \
+            "{}, profiles.rs or the contact tables table_f32.bin / table_f64.bin are missing: \
+             generate them on the host with \
              `cargo run -p wrc-bench --release --bin firmware-expected` (as .ci/run does)",
             expected.display()
         );

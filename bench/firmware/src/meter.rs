@@ -134,6 +134,17 @@ pub struct Sample {
     pub stack: Option<usize>,
 }
 
+/// Calls a series can summarise.
+const SERIES_CAP: usize = 64;
+
+/// The instruction counts of a running series.
+struct Series {
+    n: usize,
+    instructions: [u64; SERIES_CAP],
+    max_stack: Option<usize>,
+    code: usize,
+}
+
 /// The target meter: prints one line per metered kernel call.
 pub struct TargetMeter {
     empty_ticks: u64,
@@ -142,6 +153,7 @@ pub struct TargetMeter {
     pub prefix: &'static str,
     /// Largest stack high-water mark seen (bytes).
     pub max_stack: usize,
+    series: Option<Series>,
 }
 
 impl TargetMeter {
@@ -152,6 +164,7 @@ impl TargetMeter {
             empty_stack: 0,
             prefix: "",
             max_stack: 0,
+            series: None,
         };
         let (t, s) = m.raw(|| ());
         m.empty_ticks = t;
@@ -199,11 +212,32 @@ impl Meter for TargetMeter {
         // into it); .ci/run maps it to the symbol's size. Thumb bit cleared.
         let code = (run::<R, F> as fn(F) -> R) as usize & !1;
         let (r, s) = self.sample(f);
+        if let Some(b) = s.stack {
+            if b > self.max_stack {
+                self.max_stack = b;
+            }
+        }
+        if let Some(ser) = &mut self.series {
+            if ser.n < SERIES_CAP {
+                ser.instructions[ser.n] = s.instructions;
+            }
+            ser.n += 1;
+            ser.max_stack = match (ser.max_stack, s.stack) {
+                (Some(a), Some(b)) => Some(if a > b { a } else { b }),
+                _ => None,
+            };
+            ser.code = code;
+            hprintln!(
+                "  state {} {} #{}: {} instructions",
+                self.prefix,
+                label,
+                ser.n - 1,
+                s.instructions
+            );
+            return r;
+        }
         match s.stack {
             Some(b) => {
-                if b > self.max_stack {
-                    self.max_stack = b;
-                }
                 hprintln!(
                     "  meter {} {}: {} instructions, {} B stack, code@{:#010x}",
                     self.prefix,
@@ -223,5 +257,53 @@ impl Meter for TargetMeter {
             ),
         }
         r
+    }
+
+    fn series_begin(&mut self) {
+        self.series = Some(Series {
+            n: 0,
+            instructions: [0; SERIES_CAP],
+            max_stack: Some(0),
+            code: 0,
+        });
+    }
+
+    fn series_end(&mut self, label: &'static str) {
+        let Some(mut ser) = self.series.take() else {
+            return;
+        };
+        let n = if ser.n < SERIES_CAP {
+            ser.n
+        } else {
+            SERIES_CAP
+        };
+        if n == 0 {
+            return;
+        }
+        let v = &mut ser.instructions[..n];
+        v.sort_unstable();
+        // the upper median for an even count, as the host example
+        let (median, max) = (v[n / 2], v[n - 1]);
+        let stack = ser.max_stack.unwrap_or(WINDOW);
+        hprintln!(
+            "  meter {} {} (median of {}): {} instructions, {} B stack, code@{:#010x}",
+            self.prefix,
+            label,
+            n,
+            median,
+            stack,
+            ser.code
+        );
+        hprintln!(
+            "  series {} {}: {} calls, median {} / min {} / max {} instructions, max/median {}.{:03}",
+            self.prefix,
+            label,
+            n,
+            median,
+            v[0],
+            max,
+            max / median.max(1),
+            (max % median.max(1)) * 1000 / median.max(1)
+        );
     }
 }

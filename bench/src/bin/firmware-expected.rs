@@ -2,11 +2,14 @@
 //! `f32` and `f64`, bit-exact (`from_bits`), for the QEMU firmware to compare against; and
 //! `bench/firmware/src/profiles.rs`: the S1002 wheel and UIC60 rail tables (host preprocessing of
 //! `data/profiles/`) as const data in both precisions, bit-exact copies of the tables the
-//! host used for the wheel cases.
+//! host used for the wheel cases; and `table_f32.bin` / `table_f64.bin` beside them: the contact
+//! table of the step cases (`cases::step_spec`, S1002/UIC60 1353 mm right wheel, as
+//! `examples/realtime_step.rs`) built with `wrc_kernel::table::build_table`, which the firmware
+//! embeds with `include_bytes!` and reads in place.
 //!
 //! Usage: `cargo run -p wrc-bench --release --bin firmware-expected [OUTPUT]` (default output:
 //! `bench/firmware/src/expected.rs`; `profiles.rs` goes beside it). `.ci/run` runs it before the
-//! cross build; both files are generated, not committed (see `.gitignore`), so they always match
+//! cross build; the files are generated, not committed (see `.gitignore`), so they always match
 //! the kernel and the profile preprocessing being tested.
 
 use std::fmt::Write as _;
@@ -16,9 +19,13 @@ use std::path::PathBuf;
 #[allow(dead_code)]
 mod cases;
 
-use cases::{NoMeter, Outs, WheelProfiles, NAMES, N_CASES, PROFILE_NODES};
+use cases::{NoMeter, Outs, WheelProfiles, NAMES, N_CASES, PROFILE_NODES, STEP_SLOTS, STEP_STRIPS};
 use std::sync::OnceLock;
+use wrc_kernel::geometry::Side;
 use wrc_kernel::profile::ProfileTable;
+use wrc_kernel::table::{build_table, table_bytes, TableSlot};
+use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
+use wrc_kernel::Material;
 
 type Table<T> = ProfileTable<T, PROFILE_NODES>;
 
@@ -49,10 +56,51 @@ fn pair<T: wrc_kernel::Real>() -> Pair<T> {
     (shrink(&w), shrink(&r))
 }
 
+/// The step cases' contact table in precision `T`, built as `examples/realtime_step.rs` builds it
+/// (full-capacity host profile tables, the solver's recommended configuration at μ 0.3).
+fn contact_table<T: wrc_kernel::Real>() -> &'static [u8] {
+    let (w, r) = wrc_bench::tables::<T>();
+    let spec = cases::step_spec::<T>();
+    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, STEP_SLOTS, STEP_STRIPS)];
+    let mut rows = vec![TableSlot::<T, STEP_STRIPS>::EMPTY; 2 * STEP_SLOTS * spec.n_load];
+    let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
+    let cfg = WheelConfig::recommended(
+        T::from_f64(0.3),
+        T::from_f64(cases::STEP_SPEED),
+        T::from_f64(cases::STEP_R0),
+    );
+    let rep = build_table::<T, 2048, 2048, STEP_SLOTS, STEP_STRIPS, 4, 128, 256, 4, 32, 32, 128>(
+        &r,
+        &w,
+        &cases::step_setup::<T>(),
+        Side::Right,
+        &Material::steel(),
+        &cfg,
+        &spec,
+        &mut rows,
+        &mut ws,
+        &mut out,
+    )
+    .expect("contact table build");
+    println!(
+        "contact table f{}: {} nodes ({} not converged, {} slots used), {} bytes",
+        8 * T::BYTES,
+        rep.nodes,
+        rep.not_converged,
+        rep.slots_used,
+        rep.bytes
+    );
+    out.leak()
+}
+
 impl WheelProfiles for f32 {
     fn tables() -> Pair<f32> {
         static P: OnceLock<Pair<f32>> = OnceLock::new();
         *P.get_or_init(pair::<f32>)
+    }
+    fn contact_table() -> &'static [u8] {
+        static B: OnceLock<&'static [u8]> = OnceLock::new();
+        B.get_or_init(contact_table::<f32>)
     }
 }
 
@@ -60,6 +108,10 @@ impl WheelProfiles for f64 {
     fn tables() -> Pair<f64> {
         static P: OnceLock<Pair<f64>> = OnceLock::new();
         *P.get_or_init(pair::<f64>)
+    }
+    fn contact_table() -> &'static [u8] {
+        static B: OnceLock<&'static [u8]> = OnceLock::new();
+        B.get_or_init(contact_table::<f64>)
     }
 }
 
@@ -196,6 +248,14 @@ fn main() {
     std::fs::write(&out, s).unwrap_or_else(|e| panic!("writing {}: {e}", out.display()));
     println!("wrote {} ({} cases)", out.display(), N_CASES);
     write_profiles(&out.with_file_name("profiles.rs"));
+    for (name, bytes) in [
+        ("table_f32.bin", f32::contact_table()),
+        ("table_f64.bin", f64::contact_table()),
+    ] {
+        let p = out.with_file_name(name);
+        std::fs::write(&p, bytes).unwrap_or_else(|e| panic!("writing {}: {e}", p.display()));
+        println!("wrote {} ({} bytes)", p.display(), bytes.len());
+    }
     // The firmware's f32-against-host-f64 check, run here first: a case that fails it on the
     // host would fail on every board.
     for i in 0..N_CASES {
