@@ -53,6 +53,12 @@ pub struct SlotResult<T> {
     pub rolling_radius: T,
     /// Reference point, lateral position in the rail file, mm.
     pub y_ref_rail: T,
+    /// Reference point, longitudinal position in the track frame, mm.
+    pub x_ref: T,
+    /// Reference point, lateral position in the track frame, mm.
+    pub y_ref_track: T,
+    /// Reference point, vertical position in the track frame, mm.
+    pub z_ref_track: T,
     /// Creepages used.
     pub creepage: Creepage<T>,
     /// Longitudinal creep force on the wheel (patch frame), N.
@@ -221,6 +227,9 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
                 angle,
                 rolling_radius: fld(SlotField::RollingRadius),
                 y_ref_rail: fld(SlotField::YRefRail),
+                x_ref: fld(SlotField::XRef),
+                y_ref_track: fld(SlotField::YRefTrack),
+                z_ref_track: fld(SlotField::ZRefTrack),
                 pmax: fld(SlotField::Pmax) * f13,
                 area: fld(SlotField::Area) * f23,
                 ..SlotResult::default()
@@ -234,9 +243,9 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
                 z_ref_rail: T::ZERO,
                 y_ref_wheel: T::ZERO,
                 z_ref_wheel: T::ZERO,
-                x_ref: fld(SlotField::XRef),
-                y_ref_track: fld(SlotField::YRefTrack),
-                z_ref_track: fld(SlotField::ZRefTrack),
+                x_ref: slot.x_ref,
+                y_ref_track: slot.y_ref_track,
+                z_ref_track: slot.z_ref_track,
                 angle,
                 angle_own: angle,
                 rolling_radius: slot.rolling_radius,
