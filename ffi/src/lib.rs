@@ -586,7 +586,9 @@ fn table_size(
     strips: u32,
 ) -> Option<usize> {
     let slot = (strips as usize).checked_mul(3)?.checked_add(SLOT_FIXED)?;
-    let node = (slots as usize).checked_mul(slot)?.checked_add(NODE_FIXED)?;
+    let node = (slots as usize)
+        .checked_mul(slot)?
+        .checked_add(NODE_FIXED)?;
     let nodes = (n_dy as usize).checked_mul(n_load as usize)?;
     nodes
         .checked_mul(node)?
