@@ -197,32 +197,19 @@ fn staticlib() -> PathBuf {
     lib
 }
 
-#[test]
-fn c_program_matches_the_rust_api_bit_for_bit_and_checks_bad_inputs() {
-    let t = tables();
-    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("wrc-ffi-c");
-    std::fs::create_dir_all(&dir).unwrap();
-    let (p64, p32, pcap) = (
-        dir.join("s1002_uic60_f64.wrct"),
-        dir.join("s1002_uic60_f32.wrct"),
-        dir.join("over_capacity_f64.wrct"),
-    );
-    std::fs::write(&p64, &t.f64).unwrap();
-    std::fs::write(&p32, &t.f32).unwrap();
-    std::fs::write(&pcap, &t.over_capacity).unwrap();
-
+/// Compiles `tests/c/<file>` with the system C compiler (`$CC`, else `cc`) as C11 with all
+/// warnings as errors, linked against this invocation's `libwrc_ffi.a`; returns the executable.
+fn compile_c(file: &str, dir: &Path) -> PathBuf {
     let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let exe = dir.join("step_test");
+    let exe = dir.join(file.trim_end_matches(".c"));
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
+    let lib = staticlib();
+    eprintln!("linking {}", lib.display());
     let out = Command::new(&cc)
         .args(["-std=c11", "-Wall", "-Wextra", "-Werror", "-O2", "-I"])
         .arg(manifest.join("include"))
-        .arg(manifest.join("tests/c/step_test.c"))
-        .arg({
-            let lib = staticlib();
-            eprintln!("linking {}", lib.display());
-            lib
-        })
+        .arg(manifest.join("tests/c").join(file))
+        .arg(lib)
         .args([
             "-lm",
             "-lpthread",
@@ -237,10 +224,59 @@ fn c_program_matches_the_rust_api_bit_for_bit_and_checks_bad_inputs() {
         .expect("run the C compiler");
     assert!(
         out.status.success(),
-        "{cc} failed:\n{}",
+        "{cc} {file} failed:\n{}",
         String::from_utf8_lossy(&out.stderr)
     );
+    exe
+}
 
+/// The tables as files, written once (tests run in parallel): (folder, f64, f32, over capacity).
+fn table_files() -> (PathBuf, PathBuf, PathBuf, PathBuf) {
+    static F: OnceLock<(PathBuf, PathBuf, PathBuf, PathBuf)> = OnceLock::new();
+    F.get_or_init(|| {
+        let t = tables();
+        let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("wrc-ffi-c");
+        std::fs::create_dir_all(&dir).unwrap();
+        let (p64, p32, pcap) = (
+            dir.join("s1002_uic60_f64.wrct"),
+            dir.join("s1002_uic60_f32.wrct"),
+            dir.join("over_capacity_f64.wrct"),
+        );
+        std::fs::write(&p64, &t.f64).unwrap();
+        std::fs::write(&p32, &t.f32).unwrap();
+        std::fs::write(&pcap, &t.over_capacity).unwrap();
+        (dir, p64, p32, pcap)
+    })
+    .clone()
+}
+
+#[test]
+fn readme_c_example_compiles_runs_and_is_the_readme_text() {
+    let (dir, p64, _, _) = table_files();
+    let exe = compile_c("minimal.c", &dir);
+    let run = Command::new(&exe).arg(&p64).output().expect("run minimal");
+    let stdout = String::from_utf8_lossy(&run.stdout);
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    eprintln!("{stdout}");
+    assert!(stdout.contains("vertical load"));
+    let manifest = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let src = std::fs::read_to_string(manifest.join("tests/c/minimal.c")).unwrap();
+    let readme = std::fs::read_to_string(manifest.join("../README.md")).unwrap();
+    assert!(
+        readme.contains(&src),
+        "README.md's \"Use from C\" example differs from ffi/tests/c/minimal.c"
+    );
+}
+
+#[test]
+fn c_program_matches_the_rust_api_bit_for_bit_and_checks_bad_inputs() {
+    let t = tables();
+    let (dir, p64, p32, pcap) = table_files();
+    let exe = compile_c("step_test.c", &dir);
     let run = Command::new(&exe)
         .args([&p64, &p32, &pcap])
         .output()
