@@ -461,8 +461,9 @@ unsafe fn table_check<T: Real>(
     // SAFETY: forwarded contract of the entry point.
     let r = unsafe { table_slice(bytes, len) }.and_then(check::<T>);
     if !out_info.is_null() {
-        // SAFETY: non-null; the caller passes a valid, aligned, writable wrc_table_info.
-        unsafe { out_info.write(r.unwrap_or_default()) };
+        // SAFETY: non-null; the caller passes a valid, writable wrc_table_info (any alignment:
+        // written unaligned).
+        unsafe { out_info.write_unaligned(r.unwrap_or_default()) };
     }
     status(r)
 }
@@ -489,13 +490,14 @@ unsafe fn step_entry<T: Precision>(
     let r = if input.is_null() {
         Err(wrc_status::WRC_ERR_NULL_POINTER)
     } else {
-        // SAFETY: non-null; the caller passes a valid, aligned input struct.
-        let inp = unsafe { input.read() };
+        // SAFETY: non-null; the caller passes a valid input struct (read unaligned).
+        let inp = unsafe { input.read_unaligned() };
         // SAFETY: forwarded contract of the entry point.
         unsafe { table_slice(bytes, len) }.and_then(|b| run::<T>(b, &inp))
     };
-    // SAFETY: non-null (checked); the caller passes a valid, aligned, writable output struct.
-    unsafe { output.write(r.unwrap_or_default()) };
+    // SAFETY: non-null (checked); the caller passes a valid, writable output struct (written
+    // unaligned).
+    unsafe { output.write_unaligned(r.unwrap_or_default()) };
     status(r)
 }
 
@@ -610,8 +612,8 @@ unsafe fn bytes_entry(
         return wrc_status::WRC_ERR_NULL_POINTER;
     }
     let n = table_size(value_bytes, n_dy, n_load, slots, strips);
-    // SAFETY: non-null (checked); the caller passes a writable size_t.
-    unsafe { out_len.write(n.unwrap_or(0)) };
+    // SAFETY: non-null (checked); the caller passes a writable size_t (written unaligned).
+    unsafe { out_len.write_unaligned(n.unwrap_or(0)) };
     match n {
         Some(_) => wrc_status::WRC_OK,
         None => wrc_status::WRC_ERR_BAD_ARGUMENT,

@@ -452,3 +452,26 @@ fn rust_callers_get_the_same_results_and_status_codes() {
     assert_eq!(s, WRC_OK);
     assert!((o32.vertical_load - 83_300.0).abs() < 100.0);
 }
+
+#[test]
+fn threads_stepping_on_one_table_get_the_single_threaded_results() {
+    let t = tables();
+    let b = &t.f64[..];
+    let single: Vec<wrc_step_output_f64> = (0..=24)
+        .map(|i| step64(b, b.len(), &c_input(-8.0 + 0.5 * i as f64)).1)
+        .collect();
+    std::thread::scope(|s| {
+        let hs: Vec<_> = (0..4)
+            .map(|_| {
+                s.spawn(|| {
+                    (0..=24)
+                        .map(|i| step64(b, b.len(), &c_input(-8.0 + 0.5 * i as f64)).1)
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        for h in hs {
+            assert_eq!(h.join().unwrap(), single);
+        }
+    });
+}
