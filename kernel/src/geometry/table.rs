@@ -222,6 +222,21 @@ impl<'a, T: Real> ContactTable<'a, T> {
     ///
     /// Errors: [`Error::BadTable`] naming the first check that failed.
     pub fn from_bytes(bytes: &'a [u8]) -> Result<Self, Error> {
+        Self::parse(bytes, true)
+    }
+
+    /// As [`ContactTable::from_bytes`] but without the payload checksum: every header field and
+    /// the length are checked (O(1)), the payload is not hashed. For bytes that were verified
+    /// once with [`ContactTable::from_bytes`] (at start-up) and kept unchanged since, so that a
+    /// per-step caller (the C interface) need not hash the whole table on every call. A damaged
+    /// payload read this way gives wrong numbers, never a panic (reads are bounds-checked).
+    ///
+    /// Errors: [`Error::BadTable`] naming the first check that failed.
+    pub fn from_verified_bytes(bytes: &'a [u8]) -> Result<Self, Error> {
+        Self::parse(bytes, false)
+    }
+
+    fn parse(bytes: &'a [u8], checksum: bool) -> Result<Self, Error> {
         if bytes.len() < HEADER_BYTES {
             return Err(Error::BadTable("shorter than the header"));
         }
@@ -287,7 +302,7 @@ impl<'a, T: Real> ContactTable<'a, T> {
             return Err(Error::BadTable("length"));
         }
         let payload = &bytes[HEADER_BYTES..];
-        if fnv1a(FNV_OFFSET, payload) != h.payload_checksum {
+        if checksum && fnv1a(FNV_OFFSET, payload) != h.payload_checksum {
             return Err(Error::BadTable("payload checksum"));
         }
         Ok(Self {

@@ -13,7 +13,8 @@
 //! 3. **Slots at F**: every slot's frame, load N_k = s_k F, pmax, area and its `ST` strips
 //!    (a_j, p̂_j scaled by F^{1/3}, p̂ rescaled so the strips carry N_k exactly, Kalker's
 //!    C_ij at the local ellipse n_j/m_j: Ayasse–Chollet).
-//! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_at`]).
+//! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_at`]), the frame's
+//!    reference point moved along x by the pose's yaw (first order; the table is built at yaw 0).
 //! 5. **FaStrip forces per strip in closed form** ([`strip_forces`]).
 //! 6. Steps 2–5 are repeated [`ROUNDS`] times (the normal–tangential coupling through r_k).
 //!
@@ -53,6 +54,12 @@ pub struct SlotResult<T> {
     pub rolling_radius: T,
     /// Reference point, lateral position in the rail file, mm.
     pub y_ref_rail: T,
+    /// Reference point, longitudinal position in the track frame, mm (moved by the pose's yaw).
+    pub x_ref: T,
+    /// Reference point, lateral position in the track frame, mm.
+    pub y_ref_track: T,
+    /// Reference point, vertical position in the track frame, mm.
+    pub z_ref_track: T,
     /// Creepages used.
     pub creepage: Creepage<T>,
     /// Longitudinal creep force on the wheel (patch frame), N.
@@ -227,6 +234,9 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
                 angle,
                 rolling_radius: fld(SlotField::RollingRadius),
                 y_ref_rail: fld(SlotField::YRefRail),
+                x_ref: fld(SlotField::XRef),
+                y_ref_track: fld(SlotField::YRefTrack),
+                z_ref_track: fld(SlotField::ZRefTrack),
                 pmax: fld(SlotField::Pmax) * f13,
                 area: fld(SlotField::Area) * f23,
                 ..SlotResult::default()
@@ -241,21 +251,22 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
             // converged geometry (S1002/UIC60, dy 0 … −7.5 mm, ψ ±3 and −10 mrad): the shift is
             // 2.25 mm at 3 mrad, this form within 0.5 % of it; without it η is off by
             // ψ (r_y/R) sin δ, 16 % of η in flange contact.
-            let y_track = fld(SlotField::YRefTrack);
+            let y_track = slot.y_ref_track;
             let (s_ang, c_ang) = (math::sin(angle), math::cos(angle));
             let lead = match side {
                 Side::Right => slot.rolling_radius * s_ang / c_ang,
                 Side::Left => -slot.rolling_radius * s_ang / c_ang,
             };
             let x_ref = fld(SlotField::XRef) - sin_yaw * (y_track - pose.dy) - pose.yaw * lead;
+            slot.x_ref = x_ref;
             let frame = PatchFrame {
                 y_ref_rail: slot.y_ref_rail,
                 z_ref_rail: T::ZERO,
                 y_ref_wheel: T::ZERO,
                 z_ref_wheel: T::ZERO,
                 x_ref,
-                y_ref_track: y_track,
-                z_ref_track: fld(SlotField::ZRefTrack),
+                y_ref_track: slot.y_ref_track,
+                z_ref_track: slot.z_ref_track,
                 angle,
                 angle_own: angle,
                 rolling_radius: slot.rolling_radius,
