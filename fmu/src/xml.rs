@@ -79,7 +79,14 @@ fn body(vars: &[Variable]) -> String {
             let _ = writeln!(s, "      <Unknown index=\"{}\"/>", vr + 1);
         }
     }
-    s.push_str("    </Outputs>\n  </ModelStructure>\n");
+    // Outputs are calculated during initialisation too (fmi2ExitInitializationMode evaluates).
+    s.push_str("    </Outputs>\n    <InitialUnknowns>\n");
+    for (vr, v) in vars.iter().enumerate() {
+        if v.causality == Causality::Output {
+            let _ = writeln!(s, "      <Unknown index=\"{}\"/>", vr + 1);
+        }
+    }
+    s.push_str("    </InitialUnknowns>\n  </ModelStructure>\n");
     s
 }
 
