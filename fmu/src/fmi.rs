@@ -147,8 +147,8 @@ fn load_table(path: &std::path::Path) -> Result<ContactTable<'static, f64>, Stri
             b
         }
     };
-    let t = ContactTable::<f64>::from_bytes(stored)
-        .map_err(|e| format!("{}: {e}", path.display()))?;
+    let t =
+        ContactTable::<f64>::from_bytes(stored).map_err(|e| format!("{}: {e}", path.display()))?;
     if t.slots() > crate::model::SLOTS || t.strips() > crate::model::STRIP_CAP {
         return Err(format!(
             "{}: {} slots × {} strips exceed the FMU's {} × {}",
@@ -271,6 +271,16 @@ pub extern "C" fn fmi2SetDebugLogging(
     })
 }
 
+/// A copy of the environment's callbacks (null → `None`).
+fn callbacks(p: *const fmi2CallbackFunctions) -> Option<fmi2CallbackFunctions> {
+    if p.is_null() {
+        return None;
+    }
+    // SAFETY: a non-null `functions` argument of fmi2Instantiate points to the environment's
+    // callback struct, valid for the call; it is copied.
+    Some(unsafe { *p })
+}
+
 /// `fmi2Instantiate`: co-simulation only; checks the GUID and reads
 /// `<fmuResourceLocation>/table.bin`. Null on any failure (logged).
 #[no_mangle]
@@ -284,13 +294,7 @@ pub extern "C" fn fmi2Instantiate(
     loggingOn: fmi2Boolean,
 ) -> fmi2Component {
     let r = catch_unwind(|| {
-        let cb = if functions.is_null() {
-            None
-        } else {
-            // SAFETY: non-null `functions` points to the environment's callback struct, valid
-            // for this call; it is copied.
-            Some(unsafe { *functions })
-        };
+        let cb = callbacks(functions);
         let (logger, env) = cb.map_or((None, std::ptr::null_mut()), |f| {
             (f.logger, f.componentEnvironment)
         });
@@ -304,12 +308,7 @@ pub extern "C" fn fmi2Instantiate(
         }
         match arg_str(fmuGUID) {
             Some(g) if g == guid() => {}
-            g => {
-                return fail(format!(
-                    "GUID {g:?} differs from the library's {}",
-                    guid()
-                ))
-            }
+            g => return fail(format!("GUID {g:?} differs from the library's {}", guid())),
         }
         let Some(loc) = arg_str(fmuResourceLocation) else {
             return fail("no resource location".into());
@@ -502,14 +501,9 @@ pub extern "C" fn fmi2SetReal(
     value: *const fmi2Real,
 ) -> fmi2Status {
     let mut vals: Option<Vec<f64>> = arg_slice(value, nvr).map(|v| v.to_vec());
-    for_each(
-        c,
-        vr,
-        nvr,
-        vals.as_deref_mut(),
-        "fmi2SetReal",
-        |m, r, x| m.set_real(vars(), r, *x),
-    )
+    for_each(c, vr, nvr, vals.as_deref_mut(), "fmi2SetReal", |m, r, x| {
+        m.set_real(vars(), r, *x)
+    })
 }
 
 /// Refuses an access to a type the model has no variables of (any value reference is unknown).

@@ -11,6 +11,8 @@
 //!
 //! Variables, units, signs and the status codes: `docs/fmu.md`.
 
+#![warn(missing_docs)]
+
 pub mod fmi;
 pub mod model;
 pub mod pack;

@@ -133,16 +133,16 @@ pub const TOTALS: [(&str, &str, &str); 5] = [
         "spin moment, summed over the patches (each about its reference point)",
     ),
     ("fn", "N", "total normal load, summed over the patches"),
-    (
-        "dy_used",
-        "mm",
-        "the input dy the last evaluation used",
-    ),
+    ("dy_used", "mm", "the input dy the last evaluation used"),
 ];
 
 /// Per-slot outputs `slot<k>_<name>`, in [`Outputs::slots`] order.
 pub const SLOT_OUTPUTS: [(&str, &str, &str); 7] = [
-    ("fn", "N", "normal load of the patch (0: no patch in this slot)"),
+    (
+        "fn",
+        "N",
+        "normal load of the patch (0: no patch in this slot)",
+    ),
     ("fx", "N", "longitudinal creep force (patch frame)"),
     ("fy", "N", "lateral creep force (patch frame)"),
     ("mz", "N.mm", "spin moment about the reference point"),
@@ -192,8 +192,8 @@ pub struct Variable {
 /// The model's variables; the value reference of `variables()[i]` is `i`.
 pub fn variables() -> Vec<Variable> {
     let mut v = Vec::new();
-    let real = |name: String, causality, variability, unit, start, description: String, q| {
-        Variable {
+    let real =
+        |name: String, causality, variability, unit, start, description: String, q| Variable {
             name,
             base: BaseType::Real,
             causality,
@@ -202,8 +202,7 @@ pub fn variables() -> Vec<Variable> {
             start,
             description,
             quantity: q,
-        }
-    };
+        };
     for (i, (name, unit, start, d)) in INPUTS.iter().enumerate() {
         v.push(real(
             name.to_string(),

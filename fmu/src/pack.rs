@@ -43,11 +43,11 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
     let wheel = profile(ProfileKind::Wheel)?;
     let rail = profile(ProfileKind::Rail)?;
     // `wrc table` defaults: −4 … 8 mm towards the right wheel = kernel dy −8 … 4 mm (+left).
-    let (dy_from, dy_to, dy_step) = (-4.0, 8.0, 0.25);
+    let (dy_from, dy_to, dy_step): (f64, f64, f64) = (-4.0, 8.0, 0.25);
     let spec = TableSpec {
         dy_min: -dy_to,
         dy_max: -dy_from,
-        n_dy: ((dy_to - dy_from) / dy_step as f64).round() as usize + 1,
+        n_dy: ((dy_to - dy_from) / dy_step).round() as usize + 1,
         f_min: 15_000.0,
         f_max: 260_000.0,
         n_load: 5,

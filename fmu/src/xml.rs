@@ -56,7 +56,10 @@ fn body(vars: &[Variable]) -> String {
                 _ => "",
             }
         );
-        let start = v.start.map(|x| format!(" start=\"{x:?}\"")).unwrap_or_default();
+        let start = v
+            .start
+            .map(|x| format!(" start=\"{x:?}\""))
+            .unwrap_or_default();
         match v.base {
             BaseType::Real => {
                 let unit = if v.unit.is_empty() {
@@ -146,9 +149,7 @@ pub fn model_description() -> String {
         let _ = writeln!(s, "    <Unit name=\"{}\"/>", escape(u));
     }
     s.push_str("  </UnitDefinitions>\n");
-    s.push_str(
-        "  <DefaultExperiment startTime=\"0.0\" stopTime=\"2.0\" stepSize=\"0.001\"/>\n",
-    );
+    s.push_str("  <DefaultExperiment startTime=\"0.0\" stopTime=\"2.0\" stepSize=\"0.001\"/>\n");
     s.push_str(&body(vars()));
     s.push_str("</fmiModelDescription>\n");
     s
