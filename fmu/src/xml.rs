@@ -8,6 +8,17 @@ use wrc_kernel::table::{fnv1a, FNV_OFFSET};
 /// The FMU's model identifier (the shared library is `binaries/<platform>/wrc.so`).
 pub const MODEL_IDENTIFIER: &str = "wrc";
 
+/// Log categories the FMU sends messages in (not filtered by fmi2SetDebugLogging, which only
+/// switches `logAll` on and off).
+pub const LOG_CATEGORIES: [(&str, &str); 3] = [
+    (
+        "logStatusWarning",
+        "steps that failed (see the status output)",
+    ),
+    ("logStatusError", "refused calls"),
+    ("logAll", "debug messages (with fmi2SetDebugLogging on)"),
+];
+
 /// The model variables, built once.
 pub fn vars() -> &'static [Variable] {
     static V: OnceLock<Vec<Variable>> = OnceLock::new();
@@ -149,6 +160,11 @@ pub fn model_description() -> String {
         let _ = writeln!(s, "    <Unit name=\"{}\"/>", escape(u));
     }
     s.push_str("  </UnitDefinitions>\n");
+    s.push_str("  <LogCategories>\n");
+    for (name, d) in LOG_CATEGORIES {
+        let _ = writeln!(s, "    <Category name=\"{name}\" description=\"{d}\"/>");
+    }
+    s.push_str("  </LogCategories>\n");
     s.push_str("  <DefaultExperiment startTime=\"0.0\" stopTime=\"2.0\" stepSize=\"0.001\"/>\n");
     s.push_str(&body(vars()));
     s.push_str("</fmiModelDescription>\n");
