@@ -139,6 +139,23 @@ def main():
     s.freeInstance()
     print(f"bare loop setReal + doStep + getReal through FMPy: {bare / n * 1e6:.1f} us per step ({n} steps)")
 
+    # 5. a shift outside the table (12 mm towards the wheel from 50 to 80 ms) does not stop FMPy
+    t5 = np.arange(101) * H
+    u5 = np.zeros(len(t5), dtype=[("time", np.float64), ("dy", np.float64), ("fz", np.float64)])
+    u5["time"], u5["fz"] = t5, FZ
+    u5["dy"] = np.where((t5 > 0.05) & (t5 < 0.08), 12.0, 1.0)
+    r5 = simulate_fmu(str(fmu), stop_time=0.1, step_size=H, output_interval=H, input=u5,
+                      output=["dy_used", "fy", "fn", "status"])
+    out = r5[r5["dy_used"] == 12.0]
+    back = r5[(r5["time"] > (out["time"].max() if len(out) else 0.1)) & (r5["status"] == 0)]
+    if len(r5) != 101 or len(out) == 0 or (out["status"] != 3).any() or (out["fn"] != 0).any() \
+            or len(back) == 0:
+        print("FAIL: outside the table: expected status 3, zero forces, completion and recovery")
+        failed = True
+    else:
+        print(f"outside the table: {len(out)} steps with status 3 (OutOfRange) and zero forces; "
+              f"the simulation completed and recovered (status 0 from t = {back['time'][0]:.3f} s)")
+
     if failed:
         print("FMPy check FAILED")
         return 1
