@@ -487,3 +487,37 @@ fn lookup(vars: &[Variable], vr: u32, base: BaseType) -> Result<&Variable, Refus
         None => Err(Refused(format!("unknown value reference {vr}"))),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rates take the sign the shift and yaw take: d(dy)/dt of the kernel's dy is the
+    /// kernel's lateral velocity, for either side.
+    #[test]
+    fn rates_follow_the_pose_convention() {
+        for side in [Side::Right, Side::Left] {
+            let inputs = [2.0, 0.004, 0.001, 80e3, 50e3, 20.0, 0.01];
+            let i = step_input(side, &inputs, &[0.3, 460.0]);
+            assert_eq!(i.pose, WheelsetPose::towards_wheel(side, 2.0, 0.004, 0.001));
+            assert_eq!(i.kinematics.lateral_velocity / 20.0, i.pose.dy / 2.0);
+            assert_eq!(i.kinematics.yaw_rate / 0.01, i.pose.yaw / 0.004);
+            assert_eq!(i.kinematics.pitch_rate, 50e3 / 460.0);
+            assert_eq!(i.kinematics.roll_rate, 0.0);
+            assert_eq!((i.fz, i.mu, i.kinematics.speed), (80e3, 0.3, 50e3));
+        }
+    }
+
+    #[test]
+    fn value_references_are_positions_and_names_unique() {
+        let v = variables();
+        let mut names: Vec<&str> = v.iter().map(|x| x.name.as_str()).collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), v.len());
+        for x in &v {
+            let has_start = matches!(x.causality, Causality::Input | Causality::Parameter);
+            assert_eq!(x.start.is_some(), has_start, "{}", x.name);
+        }
+    }
+}
