@@ -326,7 +326,7 @@ fn closed_form_strip_forces_match_fastrip_on_a_fine_hertz_grid() {
         let r = fastrip(&patch, &SemiEllipticStrips, &cr, &set, &mut ()).unwrap();
         let (mut fx, mut fy, mut mz) = (0.0, 0.0, 0.0);
         for s in &patch.strips {
-            let (a, b, c) = strip_forces(s, &cr, MU, mat.g, mat.nu);
+            let (a, b, c) = strip_forces(s, &cr, MU, mat.g, mat.nu).unwrap();
             fx += a;
             fy += b;
             mz += c;
@@ -365,5 +365,103 @@ fn closed_form_strip_forces_match_fastrip_on_a_fine_hertz_grid() {
             .map(|s| std::f64::consts::FRAC_PI_2 * s.a * s.p_hat * s.dy)
             .sum();
         assert!(fx.hypot(fy) <= MU * carried * (1.0 + 1e-12));
+    }
+}
+
+mod garbage {
+    //! Property tests: the real-time step and the closed-form strip forces on garbage inputs (NaN,
+    //! ±∞, zero, negative, subnormal, huge, and physical values) never panic and never return a
+    //! non-finite number: an `Err`, or finite forces whose resultant stays within μ N.
+    use super::*;
+    use proptest::prelude::*;
+    use std::sync::OnceLock;
+    use wrc_kernel::fastrip::strip_forces;
+    use wrc_kernel::patch::{Creepage, Strip};
+
+    fn any() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            proptest::num::f64::ANY,
+            -10.0..10.0f64,
+            -1e-2..1e-2f64,
+            1e3..2e5f64,
+            Just(0.0),
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+            Just(-f64::INFINITY),
+            Just(1e300),
+            Just(1e-300),
+        ]
+    }
+
+    fn table() -> &'static [u8] {
+        static T: OnceLock<Vec<u8>> = OnceLock::new();
+        T.get_or_init(|| {
+            let (w, r) = tables().unwrap();
+            build(&w, &r)
+        })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 512, .. ProptestConfig::default() })]
+
+        #[test]
+        fn step_is_an_error_or_finite(
+            dy in any(), yaw in any(), roll in any(), fz in any(), mu in any(),
+            v in any(), lat in any(), yr in any(),
+        ) {
+            let t = ContactTable::<f64>::from_bytes(table()).unwrap();
+            let inp = StepInput {
+                pose: WheelsetPose { dy, yaw: yaw * 1e-3, roll: roll * 1e-3 },
+                fz,
+                kinematics: Kinematics {
+                    lateral_velocity: lat,
+                    yaw_rate: yr,
+                    ..Kinematics::nominal(v, R0)
+                },
+                mu,
+            };
+            if let Ok(r) = step::<f64, K, ST>(&t, &inp) {
+                prop_assert!(r.vertical_approach.is_finite() && r.vertical_load.is_finite());
+                for s in &r.slots {
+                    for x in [s.load, s.fx, s.fy, s.mz, s.pmax, s.area, s.angle, s.x_ref] {
+                        prop_assert!(x.is_finite(), "{s:?}");
+                    }
+                    prop_assert!(s.load >= 0.0);
+                    prop_assert!(s.fx.hypot(s.fy) <= mu * s.load * (1.0 + 1e-9) + 1e-9, "{s:?}");
+                }
+            }
+        }
+
+        #[test]
+        fn strip_forces_are_finite_and_bounded(
+            a in any(), p_hat in any(), y in any(), xc in any(), g in any(),
+            xi in any(), eta in any(), phi in any(), mu in any(),
+        ) {
+            let mat = Material::<f64>::steel();
+            let Ok(kc) = wrc_kernel::kalker::coefficients(1.0 / g.abs().max(1e-3), mat.nu) else {
+                return Ok(());
+            };
+            let s = Strip {
+                y, dy: 0.5, a, xc, p_hat,
+                c11: kc.c11, c22: kc.c22, c23: kc.c23, c33: kc.c33,
+                sqrt_b_over_a: g.abs().max(1e-3).sqrt(),
+                ..Strip::default()
+            };
+            let cr = Creepage { xi, eta, phi };
+            let Ok((fx, fy, mz)) = strip_forces(&s, &cr, mu, mat.g, mat.nu) else {
+                return Ok(());
+            };
+            let load = std::f64::consts::FRAC_PI_2 * a * p_hat * s.dy;
+            let sane = a.is_finite() && p_hat.is_finite() && mu.is_finite() && mu > 0.0
+                && xi.is_finite() && eta.is_finite() && phi.is_finite() && y.is_finite()
+                && xc.is_finite() && load.is_finite();
+            // Ok is always finite
+            prop_assert!(fx.is_finite() && fy.is_finite() && mz.is_finite(), "{fx} {fy} {mz}");
+            if sane {
+                if a > 0.0 && p_hat > 0.0 {
+                    prop_assert!(fx.hypot(fy) <= mu * load * (1.0 + 1e-9) + 1e-12, "{fx} {fy} vs {load}");
+                }
+            }
+        }
     }
 }

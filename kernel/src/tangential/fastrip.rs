@@ -936,7 +936,11 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 /// and 4.3 % of μF_z in flange contact.
 ///
 /// The resultant never exceeds μ times the strip load: the slip zone carries exactly μ p_n, the
-/// adhesion zone at most μ p_n (bound check).
+/// adhesion zone at most μ p_n (bound check). An empty strip (a_j, p̂_j or δy not positive) has
+/// no forces.
+///
+/// Errors: `NonFinite` for non-finite creepages or forces that overflow (inputs far beyond any
+/// strip), `NonPositive` for μ or G not positive.
 #[allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 pub fn strip_forces<T: Real>(
     s: &crate::patch::Strip<T>,
@@ -944,9 +948,14 @@ pub fn strip_forces<T: Real>(
     mu: T,
     g: T,
     nu: T,
-) -> (T, T, T) {
+) -> Result<(T, T, T), Error> {
+    check_finite(cr.xi, "xi")?;
+    check_finite(cr.eta, "eta")?;
+    check_finite(cr.phi, "phi")?;
+    check_positive(mu, "mu")?;
+    check_positive(g, "g")?;
     if !(s.a > T::ZERO) || !(s.p_hat > T::ZERO) || !(s.dy > T::ZERO) {
-        return (T::ZERO, T::ZERO, T::ZERO);
+        return Ok((T::ZERO, T::ZERO, T::ZERO));
     }
     let a = s.a;
     let ss = strip_solution(
@@ -1007,7 +1016,7 @@ pub fn strip_forces<T: Real>(
         None
     };
     let Some(field) = field else {
-        return (T::ZERO, T::ZERO, T::ZERO);
+        return Ok((T::ZERO, T::ZERO, T::ZERO));
     };
     let tau_f = field.onset();
     let onset = (
@@ -1074,5 +1083,10 @@ pub fn strip_forces<T: Real>(
         }
     }
     let mz = s.xc * fy + xpy - s.y * fx;
-    (fx * s.dy, fy * s.dy, mz * s.dy)
+    let out = (fx * s.dy, fy * s.dy, mz * s.dy);
+    if !(math::is_finite(out.0) && math::is_finite(out.1) && math::is_finite(out.2)) {
+        // only beyond any physical strip (e.g. a = 1e300 mm with p̂ = 1e-300 MPa)
+        return Err(Error::NonFinite("strip forces"));
+    }
+    Ok(out)
 }

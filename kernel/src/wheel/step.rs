@@ -322,7 +322,7 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
                     sqrt_b_over_a: math::sqrt(g),
                     ..Strip::default()
                 };
-                let (sx, sy, sm) = strip_forces(&s, &cr, mu, mat.g, mat.nu);
+                let (sx, sy, sm) = strip_forces(&s, &cr, mu, mat.g, mat.nu)?;
                 fx += sx;
                 fy += sy;
                 mz += sm;
