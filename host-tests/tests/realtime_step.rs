@@ -457,10 +457,8 @@ mod garbage {
                 && xc.is_finite() && load.is_finite();
             // Ok is always finite
             prop_assert!(fx.is_finite() && fy.is_finite() && mz.is_finite(), "{fx} {fy} {mz}");
-            if sane {
-                if a > 0.0 && p_hat > 0.0 {
-                    prop_assert!(fx.hypot(fy) <= mu * load * (1.0 + 1e-9) + 1e-12, "{fx} {fy} vs {load}");
-                }
+            if sane && a > 0.0 && p_hat > 0.0 {
+                prop_assert!(fx.hypot(fy) <= mu * load * (1.0 + 1e-9) + 1e-12, "{fx} {fy} vs {load}");
             }
         }
     }
