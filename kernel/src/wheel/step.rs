@@ -205,8 +205,11 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
                 let share = at(table, &c, o + SlotField::Share as usize);
-                let ang = at(table, &c, o + SlotField::Angle as usize);
-                sum += share * (math::cos(ang) + *r * e_z(side, ang));
+                // a slot without a patch here adds exactly 0: skip its trigonometry
+                if share != T::ZERO {
+                    let ang = at(table, &c, o + SlotField::Angle as usize);
+                    sum += share * (math::cos(ang) + *r * e_z(side, ang));
+                }
             }
             if !(sum > T::ZERO) {
                 return Err(Error::NoContact);
