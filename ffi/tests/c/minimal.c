@@ -1,4 +1,4 @@
-/* Minimal use of the wrc C interface (the README's example; ffi/tests/c_api.rs compiles and runs it). */
+/* Minimal use of the wrc C interface (shown in docs/ffi.md; ffi/tests/c_api.rs compiles and runs it). */
 #include "wrc.h"
 
 #include <stdio.h>
