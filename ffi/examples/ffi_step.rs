@@ -10,51 +10,19 @@
 use std::hint::black_box;
 use std::time::Instant;
 use wrc_ffi::*;
-use wrc_host_tests::profiles::{manchester_tables, SmoothOptions};
-use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelsetPose};
+use wrc_host_tests::realtime::{s1002_uic60_table, standard_spec};
+use wrc_kernel::geometry::{Kinematics, WheelsetPose};
 use wrc_kernel::step::{step, StepInput};
-use wrc_kernel::table::{build_table, table_bytes, ContactTable, TableSlot, TableSpec};
-use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
-use wrc_kernel::{Material, Real};
+use wrc_kernel::table::ContactTable;
+use wrc_kernel::Real;
 
 const K: usize = 3;
 const ST: usize = 32;
 
 fn table<T: Real>() -> Vec<u8> {
-    let (w, r) = manchester_tables::<T>(&SmoothOptions::default()).expect("built-in profiles");
-    let spec = TableSpec {
-        dy_min: T::from_f64(-8.0),
-        dy_max: T::from_f64(4.0),
-        n_dy: 49,
-        f_min: T::from_f64(15_000.0),
-        f_max: T::from_f64(260_000.0),
-        n_load: 5,
-        grid_step: T::from_f64(0.05),
-        equilibrium_roll: true,
-    };
-    let setup = TrackSetup {
-        back_to_back: T::from_f64(1353.0),
-        ..TrackSetup::standard()
-    };
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, K, ST)];
-    let mut rows = vec![TableSlot::<T, ST>::EMPTY; 2 * K * spec.n_load];
-    let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
-    let speed = T::from_f64(100.0 / 3.6 * 1000.0);
-    let cfg = WheelConfig::recommended(T::from_f64(0.3), speed, T::from_f64(460.0));
-    build_table::<T, 2048, 2048, K, ST, 4, 128, 256, 4, 32, 32, 128>(
-        &r,
-        &w,
-        &setup,
-        Side::Right,
-        &Material::steel(),
-        &cfg,
-        &spec,
-        &mut rows,
-        &mut ws,
-        &mut out,
-    )
-    .expect("table build");
-    out
+    s1002_uic60_table::<T, K, ST>(&standard_spec())
+        .expect("table build")
+        .0
 }
 
 /// State `q` of the bench's 1000 (f64).

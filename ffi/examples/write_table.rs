@@ -4,49 +4,14 @@
 //!
 //! Run: `cargo run --release -p wrc-ffi --example write_table -- OUT.wrct [f32]` (f64 unless `f32`).
 
-use wrc_host_tests::profiles::{manchester_tables, SmoothOptions};
-use wrc_kernel::geometry::{Side, TrackSetup};
-use wrc_kernel::table::{build_table, table_bytes, TableSlot, TableSpec};
-use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
-use wrc_kernel::{Material, Real};
+use wrc_host_tests::realtime::{s1002_uic60_table, standard_spec};
+use wrc_kernel::Real;
 
 const K: usize = 3;
 const ST: usize = 32;
 
 fn table<T: Real>() -> Result<Vec<u8>, String> {
-    let (w, r) = manchester_tables::<T>(&SmoothOptions::default()).map_err(|e| e.to_string())?;
-    let spec = TableSpec {
-        dy_min: T::from_f64(-8.0),
-        dy_max: T::from_f64(4.0),
-        n_dy: 49,
-        f_min: T::from_f64(15_000.0),
-        f_max: T::from_f64(260_000.0),
-        n_load: 5,
-        grid_step: T::from_f64(0.05),
-        equilibrium_roll: true,
-    };
-    let setup = TrackSetup {
-        back_to_back: T::from_f64(1353.0),
-        ..TrackSetup::standard()
-    };
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, K, ST)];
-    let mut rows = vec![TableSlot::<T, ST>::EMPTY; 2 * K * spec.n_load];
-    let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
-    let speed = T::from_f64(100.0 / 3.6 * 1000.0);
-    let cfg = WheelConfig::recommended(T::from_f64(0.3), speed, T::from_f64(460.0));
-    let rep = build_table::<T, 2048, 2048, K, ST, 4, 128, 256, 4, 32, 32, 128>(
-        &r,
-        &w,
-        &setup,
-        Side::Right,
-        &Material::steel(),
-        &cfg,
-        &spec,
-        &mut rows,
-        &mut ws,
-        &mut out,
-    )
-    .map_err(|e| e.to_string())?;
+    let (out, rep) = s1002_uic60_table::<T, K, ST>(&standard_spec()).map_err(|e| e.to_string())?;
     eprintln!(
         "{} nodes ({} not converged), {} slots used, {} bytes",
         rep.nodes, rep.not_converged, rep.slots_used, rep.bytes

@@ -9,6 +9,7 @@ pub mod fftconv;
 pub mod influence;
 pub mod norm;
 pub mod profiles;
+pub mod realtime;
 pub mod table;
 pub mod tang;
 pub mod tangstudy;
