@@ -331,33 +331,83 @@ pub fn reference(pc: &PatchCase, mat: &Material<f64>, mu: f64, speed: f64) -> (R
     (run, sol)
 }
 
+/// A model's wear profile against the reference's, in absolute terms so that errors can be
+/// weighted over patches (per-patch ratios are dominated by centred states whose wear is ~10⁻⁴ of
+/// the others).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct WearCmp {
+    /// max over the reference rows of |Δdepth|, mm.
+    pub dmax: f64,
+    /// max reference depth, mm.
+    pub rmax: f64,
+    /// |∫model depth dy − ∫reference depth dy|, mm².
+    pub dint: f64,
+    /// ∫reference depth dy, mm².
+    pub rint: f64,
+}
+
+impl WearCmp {
+    /// Per-patch ratios (max |Δdepth| / max depth, |Δ∫| / ∫); (NaN, NaN) if the reference does
+    /// not wear.
+    pub fn ratios(&self) -> (f64, f64) {
+        if self.rmax > 0.0 && self.rint > 0.0 {
+            (self.dmax / self.rmax, self.dint / self.rint)
+        } else {
+            (f64::NAN, f64::NAN)
+        }
+    }
+}
+
 /// Wear profile error of `model` against `reference` (both (y, depth) ascending): the model's
-/// depth interpolated linearly onto the reference's rows (0 outside its strips); returns
-/// (max |Δdepth| / max reference depth, |Δ∫depth dy| / ∫reference depth dy). (NaN, NaN) if the
-/// reference does not wear.
-pub fn wear_error(model: &[(f64, f64)], reference: &[(f64, f64)]) -> (f64, f64) {
+/// depth interpolated linearly onto the reference's rows (0 outside its strips); integrals by the
+/// rows' midpoint widths ((y_{k+1} − y_{k−1})/2, the end rows their inner half-spacing).
+pub fn wear_error(model: &[(f64, f64)], reference: &[(f64, f64)]) -> WearCmp {
     let ys: Vec<f64> = model.iter().map(|w| w.0).collect();
     let ds: Vec<f64> = model.iter().map(|w| w.1).collect();
     let (ylo, yhi) = match (ys.first(), ys.last()) {
         (Some(&a), Some(&b)) => (a, b),
         _ => (f64::MAX, f64::MIN),
     };
-    let rmax = reference.iter().map(|w| w.1).fold(0.0, f64::max);
-    if rmax <= 0.0 {
-        return (f64::NAN, f64::NAN);
-    }
-    let (mut dmax, mut sr, mut sm) = (0.0f64, 0.0, 0.0);
-    for &(y, d) in reference {
+    let n = reference.len();
+    let width = |k: usize| -> f64 {
+        if n < 2 {
+            return 1.0;
+        }
+        let lo = if k == 0 {
+            reference[0].0
+        } else {
+            0.5 * (reference[k - 1].0 + reference[k].0)
+        };
+        let hi = if k + 1 == n {
+            reference[n - 1].0
+        } else {
+            0.5 * (reference[k].0 + reference[k + 1].0)
+        };
+        let h = hi - lo;
+        // end rows: their inner half-spacing counted twice (a full row width)
+        if k == 0 || k + 1 == n {
+            2.0 * h
+        } else {
+            h
+        }
+    };
+    let mut w = WearCmp::default();
+    let (mut sr, mut sm) = (0.0, 0.0);
+    for (k, &(y, d)) in reference.iter().enumerate() {
         let m = if y < ylo || y > yhi {
             0.0
         } else {
             lerp(&ys, &ds, y)
         };
-        dmax = dmax.max((m - d).abs());
-        sr += d;
-        sm += m;
+        w.dmax = w.dmax.max((m - d).abs());
+        w.rmax = w.rmax.max(d);
+        let h = width(k);
+        sr += d * h;
+        sm += m * h;
     }
-    (dmax / rmax, (sm - sr).abs() / sr)
+    w.rint = sr;
+    w.dint = (sm - sr).abs();
+    w
 }
 
 /// One patch compared: forces normalised by μF_n (x, y, M_z/(μF_n c)) of a model and the

@@ -19,7 +19,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 use wrc_host_tests::tangstudy::{
-    on_norm, on_stripes, reference, wear_error, CellRec, Compared, Measures, Run, MODELS,
+    on_norm, on_stripes, reference, wear_error, CellRec, Compared, Measures, Run, WearCmp, MODELS,
 };
 use wrc_host_tests::wheelrail::{
     mbench_material, mbench_rows, solve_mbench_row, solve_sweep_case, sweep_cases, tables,
@@ -28,8 +28,8 @@ use wrc_host_tests::wheelrail::{
 use wrc_kernel::geometry::Side;
 use wrc_kernel::Material;
 
-/// One model on a patch: (on STRIPES, on NORM) comparisons and wear-profile errors (max, integral).
-type ModelCmp = (Compared, Compared, (f64, f64), (f64, f64));
+/// One model on a patch: (on STRIPES, on NORM) comparisons and wear-profile comparisons.
+type ModelCmp = (Compared, Compared, WearCmp, WearCmp);
 
 /// One compared patch.
 struct Row {
@@ -279,7 +279,7 @@ fn write_csv(rows: &[Row], path: &str) {
         )
         .unwrap();
         for (a, b, wa, wb) in &r.models {
-            for (c, w) in [(a, wa), (b, wb)] {
+            for (c, w) in [(a, wa.ratios()), (b, wb.ratios())] {
                 write!(
                     f,
                     ",{:.6},{:.6},{:.6},{:.4},{:.4}",
@@ -460,28 +460,52 @@ fn summarise(rows: &[Row], failures: &[String], wall: f64) {
             );
         }
     }
-    println!("\nWear profile vs TANG (patches where the reference wears): mean of max|Δdepth|/max depth and of |Δ∫depth|/∫depth, %");
+    println!("\nWear profile vs TANG (patches where the reference wears), peak = max|Δdepth| vs max depth, integral = |Δ∫depth dy| vs ∫depth dy, %:");
+    println!("  wear-weighted = Σ|Δ| / Σ reference over patches; median and plain mean of the per-patch ratios");
+    println!(
+        "  {:<16} {:>8} | {:>9} {:>9} | {:>9} {:>9} | {:>9} {:>9}",
+        "model", "pressure", "wtd peak", "wtd int", "med peak", "med int", "mean peak", "mean int"
+    );
     for (mi, m) in MODELS.iter().enumerate() {
-        let mut v = [vec![], vec![], vec![], vec![]];
-        for r in rows {
-            let (_, _, a, b) = r.models[mi];
-            for (q, x) in [a.0, a.1, b.0, b.1].into_iter().enumerate() {
-                if x.is_finite() {
-                    v[q].push(x);
+        for (pi, pname) in ["STRIPES", "NORM"].iter().enumerate() {
+            let s = WearStats::of(rows.iter().map(|r| {
+                if pi == 0 {
+                    r.models[mi].2
+                } else {
+                    r.models[mi].3
                 }
-            }
+            }));
+            println!(
+                "  {:<16} {:>8} | {:9.1} {:9.1} | {:9.1} {:9.1} | {:9.1} {:9.1}   ({} patches)",
+                m.name(),
+                pname,
+                s.weighted.0,
+                s.weighted.1,
+                s.median.0,
+                s.median.1,
+                s.mean.0,
+                s.mean.1,
+                s.n
+            );
         }
-        let mean = |x: &Vec<f64>| 100.0 * x.iter().sum::<f64>() / x.len().max(1) as f64;
-        println!(
-            "  {:<16} STRIPES {:7.1} {:7.1}   NORM {:7.1} {:7.1}   ({} patches)",
-            m.name(),
-            mean(&v[0]),
-            mean(&v[1]),
-            mean(&v[2]),
-            mean(&v[3]),
-            v[0].len()
-        );
     }
+    let fa = WearStats::of(rows.iter().map(|r| r.models[5].2));
+    let chk = |b: bool| if b { "met" } else { "MISSED" };
+    println!("\nIssue-17 wear targets, FaStrip-AC (default pipeline on STRIPES pressure) vs TANG on NORM:");
+    println!(
+        "  wear-weighted integral ≤ 6 %: {:.1} % {}; peak ≤ 10 %: {:.1} % {}",
+        fa.weighted.1,
+        chk(fa.weighted.1 <= 6.0),
+        fa.weighted.0,
+        chk(fa.weighted.0 <= 10.0)
+    );
+    println!(
+        "  median integral ≤ 8 %: {:.1} % {}; peak ≤ 15 %: {:.1} % {}",
+        fa.median.1,
+        chk(fa.median.1 <= 8.0),
+        fa.median.0,
+        chk(fa.median.0 <= 15.0)
+    );
     // Issue-7 targets for the default pipeline (FaStrip-AC on STRIPES) and FaStrip-AC on NORM.
     let fa = 5;
     let m = |s: &str| -> (Measures, Measures) {
@@ -494,7 +518,6 @@ fn summarise(rows: &[Row], failures: &[String], wall: f64) {
     };
     let (s1353, n1353) = m("1353");
     let (sall, nall) = m("all");
-    let chk = |b: bool| if b { "met" } else { "MISSED" };
     println!("\nIssue-7 targets, FaStrip-AC (default pipeline on STRIPES pressure):");
     println!(
         "  eq. 31 on 1353 ≤ 4 %: {:.2} % {}",
@@ -525,4 +548,47 @@ fn summarise(rows: &[Row], failures: &[String], wall: f64) {
         100.0 * nall.floored,
         chk(nall.floored <= 0.03)
     );
+}
+
+/// Wear-profile statistics over patches, % ((peak, integral) pairs).
+struct WearStats {
+    n: usize,
+    weighted: (f64, f64),
+    median: (f64, f64),
+    mean: (f64, f64),
+}
+
+impl WearStats {
+    fn of(it: impl Iterator<Item = WearCmp>) -> Self {
+        let v: Vec<WearCmp> = it.filter(|w| w.rmax > 0.0 && w.rint > 0.0).collect();
+        let n = v.len();
+        let sum = |f: &dyn Fn(&WearCmp) -> f64| v.iter().map(f).sum::<f64>();
+        let pct = |a: f64, b: f64| if b > 0.0 { 100.0 * a / b } else { f64::NAN };
+        let weighted = (
+            pct(sum(&|w| w.dmax), sum(&|w| w.rmax)),
+            pct(sum(&|w| w.dint), sum(&|w| w.rint)),
+        );
+        let med = |f: &dyn Fn(&WearCmp) -> f64| {
+            let mut x: Vec<f64> = v.iter().map(f).collect();
+            x.sort_by(f64::total_cmp);
+            if x.is_empty() {
+                f64::NAN
+            } else if x.len() % 2 == 1 {
+                100.0 * x[x.len() / 2]
+            } else {
+                50.0 * (x[x.len() / 2 - 1] + x[x.len() / 2])
+            }
+        };
+        let median = (med(&|w| w.ratios().0), med(&|w| w.ratios().1));
+        let mean = (
+            100.0 * sum(&|w| w.ratios().0) / n.max(1) as f64,
+            100.0 * sum(&|w| w.ratios().1) / n.max(1) as f64,
+        );
+        Self {
+            n,
+            weighted,
+            median,
+            mean,
+        }
+    }
 }

@@ -172,6 +172,21 @@ pub struct FastripSettings<T> {
     pub leading_slip_retry: Option<T>,
     /// Cells with |x − x_c,j| ≥ a_j − margin are exterior (mm; CONTACT M=6 uses 1e-3, default 0).
     pub edge_margin: T,
+    /// How the slip zone's slip velocity is formed (wear and the cells' `sx`, `sy`).
+    pub slip_velocity: SlipVelocity,
+}
+
+/// The slip velocity of FaStrip's slip zone (the tractions and forces do not depend on it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "defmt", derive(defmt::Format))]
+pub enum SlipVelocity {
+    /// From the strip solution: the half-plane strain of the strip's tractions (Carter's slip in
+    /// the partial-slip zone, √-onset at the slip boundary). Default.
+    StripTheory,
+    /// The upwind form of methods.md §4.2, s = w + (u(x_i) − u(x_{i+1}))/δx with u = L p (what
+    /// CONTACT's FaStrip does; 2–7× too fast in the trailing-edge slip band of mostly adhering
+    /// patches, where L·∂p/∂x of the μp_n-bounded traction is singular).
+    Upwind,
 }
 
 impl<T: Real> FastripSettings<T> {
@@ -191,6 +206,7 @@ impl<T: Real> FastripSettings<T> {
             spin_in_x: SpinInX::Linear,
             leading_slip_retry: None,
             edge_margin: T::ZERO,
+            slip_velocity: SlipVelocity::StripTheory,
         }
     }
 
@@ -203,6 +219,7 @@ impl<T: Real> FastripSettings<T> {
             direction: FastsimSettings::canonical(mu, TractionBound::Elliptic),
             bound_check: BoundCheck::Off,
             spin_in_x: SpinInX::Lateral,
+            slip_velocity: SlipVelocity::Upwind,
             ..Self::new(mu)
         }
     }
@@ -387,6 +404,50 @@ fn adhesion_traction<T: Real>(ss: &StripSolution<T>, a: T, xb: T) -> Option<(T, 
     ))
 }
 
+/// Slip velocity (dimensionless, s = v_slip/V) of FaStrip's slip zone from its strip solution
+/// ([`SlipVelocity::StripTheory`]): the strip's half-plane strain of the tractions, as in Carter's
+/// theory. The compliances are those the strip solution uses, 1/K_x with K_x = (G/2)(4/π²)C11 and
+/// K_y = (G/2)(4/π²)C22 (so that P κd = −K_x X_j and P λ'd = −K_y η in adhesion).
+///
+/// * Partial slip (d < a): the two semi-ellipses S₁ and S₂ cancel the rigid slip in the adhesion
+///   zone; in the slip zone x̄ < 2d − a only the smaller one is outside its support, and its strain
+///   leaves s = −(P κd/K_x, P λ'd/K_y)·√((a − x̄)(2d − a − x̄))/d — zero at the slip boundary
+///   (square-root onset), 2(X_j, η)√(a/d) at the trailing edge.
+/// * Full slip: the traction μp_n u (u its direction) is a semi-ellipse of slope P along u, so
+///   s = w + (P u_x x̄/K_x, P u_y x̄/K_y) with w the rigid slip.
+///
+/// The slip is returned opposite to the traction (Coulomb's law), with the magnitude above.
+#[inline]
+fn strip_slip<T: Real>(
+    ss: &StripSolution<T>,
+    s: &crate::patch::Strip<T>,
+    g: T,
+    w: (T, T),
+    p: (T, T),
+    xb: T,
+) -> (T, T) {
+    let four_pi2 = c::<T>(4.0) / (T::PI * T::PI);
+    let kx = T::HALF * g * four_pi2 * s.c11;
+    let ky = T::HALF * g * four_pi2 * s.c22;
+    let pm = math::hypot_fast(p.0, p.1);
+    if !(kx > T::ZERO && ky > T::ZERO) || pm <= T::ZERO {
+        return (T::ZERO, T::ZERO);
+    }
+    let (ux, uy) = (p.0 / pm, p.1 / pm);
+    let mag = if ss.full_slip || ss.d >= s.a {
+        let sx = w.0 + ss.slope * ux * xb / kx;
+        let sy = w.1 + ss.slope * uy * xb / ky;
+        math::hypot_fast(sx, sy)
+    } else if ss.d > T::ZERO {
+        let q = math::max(T::ZERO, (s.a - xb) * (T::TWO * ss.d - s.a - xb));
+        let root = math::sqrt(q) / ss.d;
+        math::hypot_fast(ss.slope * ss.kd / kx, ss.slope * ss.ld / ky) * root
+    } else {
+        T::ZERO
+    };
+    (-mag * ux, -mag * uy)
+}
+
 /// FaStrip on `patch` with normal pressure `pressure` (slip zone bound μ p_n, also used by the
 /// direction pass's `Elliptic` bound), creepages `cr`; every contact cell goes to `sink`.
 ///
@@ -569,10 +630,12 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
                 }
             };
             let u = [fl.l1 * px, fl.l2 * py];
-            let (sx, sy) = if slip {
+            let (sx, sy) = if !slip {
+                (T::ZERO, T::ZERO)
+            } else if set.slip_velocity == SlipVelocity::Upwind {
                 (wtx + (u[0] - up[0]) / dx, wty + (u[1] - up[1]) / dx)
             } else {
-                (T::ZERO, T::ZERO)
+                strip_slip(&ss, &s, g, (wx, wy), (px, py), xb)
             };
             up = u;
             let o = CellOut {
