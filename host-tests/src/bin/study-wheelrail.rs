@@ -246,7 +246,7 @@ fn main() {
 
 fn write_csv(rows: &[Row], path: &str) {
     let mut f = std::fs::File::create(path).expect("csv");
-    write!(f, "label,set,b2b,side,dy,load,patch,fn,area,xi,eta,phi,ref_fx,ref_fy,ref_mz,converged,sweeps,t_ref_s").unwrap();
+    write!(f, "label,set,b2b,side,dy,load,patch,fn,area,xi,eta,phi,ref_fx,ref_fy,ref_mz,converged,sweeps,t_ref_s,ref_wear_max_mm,ref_wear_int_mm2").unwrap();
     for m in MODELS {
         for p in ["stripes", "norm"] {
             let n = format!("{}_{p}", m.name());
@@ -257,7 +257,7 @@ fn write_csv(rows: &[Row], path: &str) {
     for r in rows {
         write!(
             f,
-            "{},{},{},{:?},{},{},{},{:.2},{:.4},{:e},{:e},{:e},{:.6},{:.6},{:.6},{},{},{:.3}",
+            "{},{},{},{:?},{},{},{},{:.2},{:.4},{:e},{:e},{:e},{:.6},{:.6},{:.6},{},{},{:.3},{:e},{:e}",
             r.label,
             r.set,
             r.b2b,
@@ -275,7 +275,9 @@ fn write_csv(rows: &[Row], path: &str) {
             r.exact[2],
             r.converged,
             r.sweeps,
-            r.t_ref
+            r.t_ref,
+            r.models[0].2.rmax,
+            r.models[0].2.rint
         )
         .unwrap();
         for (a, b, wa, wb) in &r.models {
