@@ -49,8 +49,15 @@ struct Row {
     t_ref: f64,
     /// Per model: (STRIPES, NORM) comparisons and wear errors (max, integral).
     models: Vec<ModelCmp>,
-    profiles: Option<Vec<(String, Vec<CellRec>)>>,
+    profiles: Option<Vec<Profile>>,
 }
+
+/// One source's profiles for the figures: name, cells of the strip nearest y = 0, wear per strip.
+type Profile = (String, Vec<CellRec>, Vec<(f64, f64)>);
+
+/// The seed's rolling speed for its Figs. 15–16 (200 km/h, mm/s); the sweep itself runs at
+/// [`SWEEP_SPEED`].
+const FIGURE_SPEED: f64 = 200.0 / 3.6 * 1000.0;
 
 enum Case {
     Sweep(Box<wrc_host_tests::wheelrail::SweepCase>),
@@ -87,7 +94,6 @@ fn compare(
         let area = pc.norm.area;
         let ce = Compared::new(&ex, &ex, mu, area).exact;
         let mut models = vec![];
-        let mut prof = vec![("exact".to_string(), y0_cells(&ex.cells))];
         for m in MODELS {
             let run = |r: Result<Run, wrc_kernel::Error>| {
                 r.map_err(|e| {
@@ -107,11 +113,29 @@ fn compare(
                 wear_error(&a.wear, &ex.wear),
                 wear_error(&b.wear, &ex.wear),
             ));
-            if keep_profiles {
-                prof.push((format!("{} STRIPES", m.name()), y0_cells(&a.cells)));
-                prof.push((format!("{} NORM", m.name()), y0_cells(&b.cells)));
-            }
         }
+        // The figures: the same patch at the seed's speed (the wear map depends on V|s|).
+        let profiles = if keep_profiles {
+            let v = FIGURE_SPEED;
+            let (exf, _) = reference(pc, mat, mu, v);
+            let mut prof = vec![(
+                "exact (TANG on NORM)".to_string(),
+                y0_cells(&exf.cells),
+                exf.wear,
+            )];
+            for m in MODELS {
+                for (pname, r) in [
+                    ("STRIPES", on_stripes(pc, m, mat, mu, v)),
+                    ("NORM", on_norm(pc, m, mat, mu, v)),
+                ] {
+                    let r = r.map_err(|e| format!("{label} patch {k} {}: {e}", m.name()))?;
+                    prof.push((format!("{} {pname}", m.name()), y0_cells(&r.cells), r.wear));
+                }
+            }
+            Some(prof)
+        } else {
+            None
+        };
         out.push(Row {
             label: label.to_string(),
             set,
@@ -128,7 +152,7 @@ fn compare(
             sweeps: sol.sweeps,
             t_ref,
             models,
-            profiles: keep_profiles.then_some(prof),
+            profiles,
         });
     }
     Ok(out)
@@ -301,7 +325,7 @@ fn write_profiles(rows: &[Row], dir: &str) {
         let path = format!("{dir}/y0_dy{}.csv", r.dy);
         let mut f = std::fs::File::create(&path).expect("csv");
         writeln!(f, "source,y_mm,x_mm,pn_mpa,px_mpa,py_mpa,slip,s").unwrap();
-        for (name, cells) in prof {
+        for (name, cells, _) in prof {
             for c in cells {
                 writeln!(
                     f,
@@ -311,15 +335,26 @@ fn write_profiles(rows: &[Row], dir: &str) {
                 .unwrap();
             }
         }
+        let wpath = format!("{dir}/wear_dy{}.csv", r.dy);
+        let mut f = std::fs::File::create(&wpath).expect("csv");
+        writeln!(f, "source,y_mm,wear_depth_um").unwrap();
+        for (name, _, wear) in prof {
+            for (y, d) in wear {
+                writeln!(f, "{name},{y:.4},{:e}", 1e3 * d).unwrap();
+            }
+        }
         let svg = format!("{dir}/y0_dy{}.svg", r.dy);
-        match plot_profile(&svg, &format!("{} — traction along y ≈ 0", r.label), prof) {
-            Ok(()) => println!("profiles: {path}, {svg}"),
-            Err(e) => println!("profiles: {path} (no plot: {e})"),
+        let title = format!("{}, yaw {:.1} mrad, 200 km/h", r.label, 1.2 * r.dy);
+        match plot_profile(&svg, &title, prof) {
+            Ok(()) => println!("profiles: {path}, {wpath}, {svg}"),
+            Err(e) => println!("profiles: {path}, {wpath} (no plot: {e})"),
         }
     }
 }
 
-fn plot_profile(path: &str, title: &str, prof: &[(String, Vec<CellRec>)]) -> Result<(), String> {
+/// Three panels: tangential traction |p_t| along the strip nearest y = 0 (with μp_n of the
+/// reference), slip velocity along it (m/s), wear depth per strip (µm per passage) against y.
+fn plot_profile(path: &str, title: &str, prof: &[Profile]) -> Result<(), String> {
     use plotters::prelude::*;
     let font = std::env::var("WRC_FONT")
         .unwrap_or_else(|_| "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf".into());
@@ -328,52 +363,111 @@ fn plot_profile(path: &str, title: &str, prof: &[(String, Vec<CellRec>)]) -> Res
     plotters::style::register_font("sans-serif", FontStyle::Normal, leaked)
         .map_err(|_| "font".to_string())?;
     let err = |e: &dyn std::fmt::Debug| format!("{e:?}");
-    let root = SVGBackend::new(path, (1000, 700)).into_drawing_area();
+    let root = SVGBackend::new(path, (1000, 1050)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
-    let sel: Vec<&(String, Vec<CellRec>)> = prof
+    let keep = [
+        "exact (TANG on NORM)",
+        "FaStrip-AC STRIPES",
+        "FaStrip-AC NORM",
+        "FASTSIM-AC STRIPES",
+        "FASTSIM-AC NORM",
+    ];
+    let sel: Vec<&Profile> = keep
         .iter()
-        .filter(|(n, _)| {
-            n == "exact"
-                || n == "FaStrip-AC STRIPES"
-                || n == "FaStrip-AC NORM"
-                || n == "FASTSIM-AC STRIPES"
-                || n == "FaStrip-KP NORM"
-        })
+        .filter_map(|k| prof.iter().find(|p| p.0 == *k))
         .collect();
-    let (mut x0, mut x1, mut t0, mut t1) = (f64::MAX, f64::MIN, 0.0f64, 0.0f64);
-    for (_, c) in &sel {
+    let colours = [BLACK, RED, BLUE, GREEN, MAGENTA];
+    let v_m_s = FIGURE_SPEED * 1e-3;
+    let areas = root.split_evenly((3, 1));
+    // Panels 1 and 2: along x.
+    let (mut x0, mut x1) = (f64::MAX, f64::MIN);
+    let (mut t1, mut s1) = (0.0f64, 0.0f64);
+    for (_, c, _) in &sel {
         for q in c.iter() {
             x0 = x0.min(q.x);
             x1 = x1.max(q.x);
-            for v in [q.px, q.py, q.px.hypot(q.py)] {
-                t0 = t0.min(v);
-                t1 = t1.max(v);
-            }
+            t1 = t1.max(q.px.hypot(q.py)).max(SWEEP_MU * q.pn);
+            s1 = s1.max(q.s * v_m_s);
         }
     }
     if x0 >= x1 {
         return Ok(());
     }
-    let areas = root.split_evenly((2, 1));
-    let colours = [BLACK, RED, BLUE, GREEN, MAGENTA];
-    for (ai, comp) in ["p_x", "p_y"].iter().enumerate() {
-        let mut ch = ChartBuilder::on(&areas[ai])
-            .caption(format!("{title}: {comp} (MPa)"), ("sans-serif", 18))
+    for panel in 0..2 {
+        let (ymax, caption) = if panel == 0 {
+            (t1, format!("{title}: |p_t| along y ≈ 0 (MPa); dashed μp_n"))
+        } else {
+            (s1, "slip velocity along y ≈ 0 (m/s)".to_string())
+        };
+        let mut ch = ChartBuilder::on(&areas[panel])
+            .caption(caption, ("sans-serif", 17))
             .margin(10)
             .x_label_area_size(35)
-            .y_label_area_size(55)
-            .build_cartesian_2d(x0..x1, t0 * 1.05..t1 * 1.05 + 1e-9)
+            .y_label_area_size(60)
+            .build_cartesian_2d(x0..x1, 0.0..ymax * 1.08 + 1e-12)
             .map_err(|e| err(&e))?;
         ch.configure_mesh()
-            .x_desc("x, mm")
+            .x_desc("x, mm (rolling direction)")
             .draw()
             .map_err(|e| err(&e))?;
-        for (k, (name, cells)) in sel.iter().enumerate() {
+        for (k, (name, cells, _)) in sel.iter().enumerate() {
             let col = colours[k % colours.len()];
             let pts: Vec<(f64, f64)> = cells
                 .iter()
-                .map(|c| (c.x, if ai == 0 { c.px } else { c.py }))
+                .map(|c| {
+                    (
+                        c.x,
+                        if panel == 0 {
+                            c.px.hypot(c.py)
+                        } else {
+                            c.s * v_m_s
+                        },
+                    )
+                })
                 .collect();
+            ch.draw_series(LineSeries::new(pts, col.stroke_width(2)))
+                .map_err(|e| err(&e))?
+                .label(name.as_str())
+                .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], col));
+            if panel == 0 && k == 0 {
+                let bound: Vec<(f64, f64)> = cells.iter().map(|c| (c.x, SWEEP_MU * c.pn)).collect();
+                ch.draw_series(DashedLineSeries::new(bound, 6, 4, BLACK.stroke_width(1)))
+                    .map_err(|e| err(&e))?;
+            }
+        }
+        ch.configure_series_labels()
+            .background_style(WHITE.mix(0.8))
+            .border_style(BLACK)
+            .draw()
+            .map_err(|e| err(&e))?;
+    }
+    // Panel 3: wear per strip against y.
+    let (mut y0, mut y1, mut w1) = (f64::MAX, f64::MIN, 0.0f64);
+    for (_, _, w) in &sel {
+        for &(y, d) in w.iter() {
+            y0 = y0.min(y);
+            y1 = y1.max(y);
+            w1 = w1.max(1e3 * d);
+        }
+    }
+    if y0 < y1 {
+        let mut ch = ChartBuilder::on(&areas[2])
+            .caption(
+                "wear depth per strip and passage (µm), KTH map",
+                ("sans-serif", 17),
+            )
+            .margin(10)
+            .x_label_area_size(35)
+            .y_label_area_size(60)
+            .build_cartesian_2d(y0..y1, 0.0..w1 * 1.08 + 1e-15)
+            .map_err(|e| err(&e))?;
+        ch.configure_mesh()
+            .x_desc("y, mm (contact-local, lateral)")
+            .draw()
+            .map_err(|e| err(&e))?;
+        for (k, (name, _, wear)) in sel.iter().enumerate() {
+            let col = colours[k % colours.len()];
+            let pts: Vec<(f64, f64)> = wear.iter().map(|&(y, d)| (y, 1e3 * d)).collect();
             ch.draw_series(LineSeries::new(pts, col.stroke_width(2)))
                 .map_err(|e| err(&e))?
                 .label(name.as_str())
