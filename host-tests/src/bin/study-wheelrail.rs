@@ -393,13 +393,13 @@ fn plot_profile(path: &str, title: &str, prof: &[Profile]) -> Result<(), String>
     if x0 >= x1 {
         return Ok(());
     }
-    for panel in 0..2 {
+    for (panel, area) in areas.iter().enumerate().take(2) {
         let (ymax, caption) = if panel == 0 {
             (t1, format!("{title}: |p_t| along y ≈ 0 (MPa); dashed μp_n"))
         } else {
             (s1, "slip velocity along y ≈ 0 (m/s)".to_string())
         };
-        let mut ch = ChartBuilder::on(&areas[panel])
+        let mut ch = ChartBuilder::on(area)
             .caption(caption, ("sans-serif", 17))
             .margin(10)
             .x_label_area_size(35)
