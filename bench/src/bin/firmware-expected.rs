@@ -23,7 +23,7 @@ use cases::{NoMeter, Outs, WheelProfiles, NAMES, N_CASES, PROFILE_NODES, STEP_SL
 use std::sync::OnceLock;
 use wrc_kernel::geometry::Side;
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::table::{build_table, table_bytes, TableSlot};
+use wrc_kernel::table::{build_table, TableSlot, ROW_BUFFERS};
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::Material;
 
@@ -61,8 +61,8 @@ fn pair<T: wrc_kernel::Real>() -> Pair<T> {
 fn contact_table<T: wrc_kernel::Real>() -> &'static [u8] {
     let (w, r) = wrc_bench::tables::<T>();
     let spec = cases::step_spec::<T>();
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, STEP_SLOTS, STEP_STRIPS)];
-    let mut rows = vec![TableSlot::<T, STEP_STRIPS>::EMPTY; 2 * STEP_SLOTS * spec.n_load];
+    let mut out = vec![0u8; spec.capacity_bytes(STEP_SLOTS, STEP_STRIPS)];
+    let mut rows = vec![TableSlot::<T, STEP_STRIPS>::EMPTY; ROW_BUFFERS * STEP_SLOTS * spec.n_load];
     let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
     let cfg = WheelConfig::recommended(
         T::from_f64(0.3),
@@ -82,9 +82,11 @@ fn contact_table<T: wrc_kernel::Real>() -> &'static [u8] {
         &mut out,
     )
     .expect("contact table build");
+    out.truncate(rep.bytes);
     println!(
-        "contact table f{}: {} nodes ({} not converged, {} slots used), {} bytes",
+        "contact table f{}: {} shift nodes, {} nodes solved ({} not converged, {} slots used), {} bytes",
         8 * T::BYTES,
+        rep.dy_nodes,
         rep.nodes,
         rep.not_converged,
         rep.slots_used,
