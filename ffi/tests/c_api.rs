@@ -1,7 +1,7 @@
 //! The C interface from C and from Rust (issue 15).
 //!
 //! Builds the S1002/UIC60 contact tables (1353 mm, right wheel, equilibrium roll, dy −8…4 mm
-//! every 0.25 mm × 15–260 kN in 5 loads, 3 slots × 32 strips, as host-tests `realtime_step`) in
+//! every 0.25 mm refined to 1 % × 15–260 kN in 5 loads, 3 slots × 32 strips, as host-tests `realtime_step`) in
 //! f64 and f32 plus a small table over the library's slot capacity, writes them to files,
 //! compiles `tests/c/step_test.c` with the system C compiler (`cc -std=c11 -Wall -Wextra
 //! -Werror`) against `libwrc_ffi.a` of this cargo invocation, runs it, and checks its lateral

@@ -2,7 +2,7 @@
 //!
 //! The table is the one `wrc table --back-to-back 1353 --equilibrium-roll --out table.bin`
 //! writes: built-in S1002 wheel / UIC60 rail, right wheel, f64, shift −4 … 8 mm towards the
-//! wheel every 0.25 mm, F_z 15 … 260 kN in 5 log-spaced loads, 3 slots × 16 strips, steel
+//! wheel, coarse nodes every 0.25 mm refined to 1 % (at most 71 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, 3 slots × 16 strips, steel
 //! (E 205 900 MPa, ν 0.28), gauge 1435 mm, gauge depth 14 mm, no cant, r0 460 mm — the same
 //! kernel call with the same arguments as `cli/src/realtime.rs`.
 

@@ -10,7 +10,8 @@ use wrc_kernel::geometry::{
 };
 use wrc_kernel::step::{step, StepInput, StepResult};
 use wrc_kernel::table::{
-    build_table, fnv1a, ContactTable, TableSlot, TableSpec, FNV_OFFSET, HEADER_BYTES, ROW_BUFFERS,
+    build_table, fnv1a, narrow_to_f32, ContactTable, TableSlot, TableSpec, FNV_OFFSET,
+    HEADER_BYTES, ROW_BUFFERS,
 };
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Error, Material};
@@ -241,6 +242,20 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
             "node {node} = {v}"
         );
     }
+    // the f32 copy of the f64 table: the same grid, valid, close to the f64 step
+    let mut b32 = vec![0u8; bytes.len()];
+    let n32 = narrow_to_f32(&bytes, &mut b32).unwrap();
+    let t32 = ContactTable::<f32>::from_bytes(&b32[..n32]).unwrap();
+    let t64 = ContactTable::<f64>::from_bytes(&bytes).unwrap();
+    assert_eq!(t32.header.n_dy, t64.header.n_dy);
+    for i in 0..t64.header.n_dy {
+        assert_eq!(t32.dy_node(i), t64.dy_node(i) as f32);
+    }
+    assert_eq!(
+        narrow_to_f32(&bytes[..100], &mut b32).unwrap_err(),
+        Error::BadTable("shorter than the header")
+    );
+    assert!(narrow_to_f32(&bytes, &mut b32[..n32 - 1]).is_err());
     // the refined grid: not evenly spaced, and the step runs on every node (both ends included)
     let t = ContactTable::<f64>::from_bytes(&bytes).unwrap();
     let n = t.header.n_dy;

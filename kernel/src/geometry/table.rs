@@ -1154,3 +1154,35 @@ fn resample<T: Real, const SS: usize, const NR: usize, const ST: usize>(
     }
     Ok(())
 }
+
+/// Writes the f32 copy of the f64 table `src` into `out` (at least [`table_bytes`]`::<f32>` of
+/// its grid): the same header with 4 bytes per value, every node and payload value rounded to
+/// f32, the checksum recomputed. An f32 table made this way carries the f64 solve rounded once,
+/// instead of the solve in f32 ([`build_table`] in f32); the grid (shift nodes included) is the
+/// f64 build's. Returns the bytes written.
+///
+/// Errors: those of [`ContactTable::from_bytes`] for `src` (as f64), [`Error::BadTable`] when
+/// `out` is too small.
+pub fn narrow_to_f32(src: &[u8], out: &mut [u8]) -> Result<usize, Error> {
+    let t = ContactTable::<f64>::from_bytes(src)?;
+    let h = t.header;
+    let total = table_bytes::<f32>(h.n_dy, h.n_load, h.slots, h.strips);
+    let out = out
+        .get_mut(..total)
+        .ok_or(Error::BadTable("output buffer too small"))?;
+    out[..HEADER_BYTES].copy_from_slice(&src[..HEADER_BYTES]);
+    out[12..16].copy_from_slice(&4u32.to_le_bytes());
+    for (d, s) in out[HEADER_BYTES..]
+        .chunks_exact_mut(4)
+        .zip(src[HEADER_BYTES..].chunks_exact(8))
+    {
+        let mut w = [0u8; 8];
+        w.copy_from_slice(s);
+        d.copy_from_slice(&(f64::from_le_bytes(w) as f32).to_le_bytes());
+    }
+    let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..]);
+    out[120..128].copy_from_slice(&checksum.to_le_bytes());
+    // the rounded nodes must still be a valid grid
+    ContactTable::<f32>::from_bytes(out)?;
+    Ok(total)
+}
