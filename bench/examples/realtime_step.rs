@@ -78,7 +78,8 @@ fn run<T: Real>(name: &str) {
     }
     times.sort_by(f64::total_cmp);
     println!(
-        "{name}: table {} nodes ({} not converged, {} slots used) {} bytes, build {:.1} s; step over {} states: median {:.2} µs, P99 {:.2} µs, max {:.2} µs",
+        "{name}: table {} shift nodes, {} nodes solved ({} not converged, {} slots used) {} bytes, build {:.1} s; step over {} states: median {:.2} µs, P99 {:.2} µs, max {:.2} µs",
+        rep.dy_nodes,
         rep.nodes,
         rep.not_converged,
         rep.slots_used,

@@ -13,8 +13,8 @@ const ST: usize = 32;
 fn table<T: Real>() -> Result<Vec<u8>, String> {
     let (out, rep) = s1002_uic60_table::<T, K, ST>(&standard_spec()).map_err(|e| e.to_string())?;
     eprintln!(
-        "{} nodes ({} not converged), {} slots used, {} bytes",
-        rep.nodes, rep.not_converged, rep.slots_used, rep.bytes
+        "{} shift nodes, {} nodes solved ({} not converged), {} slots used, {} bytes",
+        rep.dy_nodes, rep.nodes, rep.not_converged, rep.slots_used, rep.bytes
     );
     Ok(out)
 }
