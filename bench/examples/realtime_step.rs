@@ -13,7 +13,7 @@ use std::time::Instant;
 use wrc_host_tests::profiles::{manchester_tables, SmoothOptions};
 use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelsetPose};
 use wrc_kernel::step::{step, StepInput, StepResult};
-use wrc_kernel::table::{build_table, table_bytes, ContactTable, TableSlot, TableSpec};
+use wrc_kernel::table::{build_table, ContactTable, TableSlot, TableSpec, ROW_BUFFERS};
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Material, Real};
 
@@ -27,22 +27,13 @@ fn one_step<T: Real>(t: &ContactTable<'_, T>, i: &StepInput<T>) -> StepResult<T,
 
 fn run<T: Real>(name: &str) {
     let (w, r) = manchester_tables::<T>(&SmoothOptions::default()).expect("built-in profiles");
-    let spec = TableSpec {
-        dy_min: T::from_f64(-8.0),
-        dy_max: T::from_f64(4.0),
-        n_dy: 49,
-        f_min: T::from_f64(15_000.0),
-        f_max: T::from_f64(260_000.0),
-        n_load: 5,
-        grid_step: T::from_f64(0.05),
-        equilibrium_roll: true,
-    };
+    let spec: TableSpec<T> = wrc_host_tests::realtime::standard_spec();
     let setup = TrackSetup {
         back_to_back: T::from_f64(1353.0),
         ..TrackSetup::standard()
     };
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, K, ST)];
-    let mut rows = vec![TableSlot::<T, ST>::EMPTY; 2 * K * spec.n_load];
+    let mut out = vec![0u8; spec.capacity_bytes(K, ST)];
+    let mut rows = vec![TableSlot::<T, ST>::EMPTY; ROW_BUFFERS * K * spec.n_load];
     let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
     let speed = T::from_f64(100.0 / 3.6 * 1000.0);
     let cfg = WheelConfig::recommended(T::from_f64(0.3), speed, T::from_f64(460.0));
@@ -60,6 +51,7 @@ fn run<T: Real>(name: &str) {
         &mut out,
     )
     .expect("table build");
+    out.truncate(rep.bytes);
     let build = t0.elapsed();
     let table = ContactTable::<T>::from_bytes(&out).expect("valid table");
     let mut times = vec![];
@@ -86,7 +78,8 @@ fn run<T: Real>(name: &str) {
     }
     times.sort_by(f64::total_cmp);
     println!(
-        "{name}: table {} nodes ({} not converged, {} slots used) {} bytes, build {:.1} s; step over {} states: median {:.2} µs, P99 {:.2} µs, max {:.2} µs",
+        "{name}: table {} shift nodes, {} nodes solved ({} not converged, {} slots used) {} bytes, build {:.1} s; step over {} states: median {:.2} µs, P99 {:.2} µs, max {:.2} µs",
+        rep.dy_nodes,
         rep.nodes,
         rep.not_converged,
         rep.slots_used,

@@ -266,9 +266,17 @@ pub struct TableArgs {
     /// Highest lateral shift, mm.
     #[arg(long = "dy-to", default_value_t = 8.0, allow_hyphen_values = true)]
     pub dy_to: f64,
-    /// Shift step between table nodes, mm.
+    /// Shift step between the coarse table nodes, mm (refined by --refine-tol).
     #[arg(long = "dy-step", default_value_t = 0.25)]
     pub dy_step: f64,
+    /// Refinement tolerance of the shift grid: an interval is bisected while its midpoint's
+    /// pmax, area (relative) or load share (absolute) differs from the interpolation by more
+    /// than this (0: the coarse grid only).
+    #[arg(long = "refine-tol", default_value_t = 0.01)]
+    pub refine_tol: f64,
+    /// Most shift nodes after refinement (the coarse nodes are always kept).
+    #[arg(long = "max-dy-nodes", default_value_t = 71)]
+    pub max_dy_nodes: usize,
     /// Lowest vertical load of the table, N.
     #[arg(long = "fz-min", default_value_t = 15_000.0)]
     pub fz_min: f64,

@@ -10,8 +10,8 @@ use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelsetPose};
 use wrc_kernel::profile::ProfileKind;
 use wrc_kernel::step::{step, StepInput, StepResult};
 use wrc_kernel::table::{
-    build_table, profile_checksum, table_bytes, ContactTable, TableHeader, TableSlot, TableSpec,
-    HEADER_BYTES,
+    build_table, profile_checksum, ContactTable, TableHeader, TableSlot, TableSpec, HEADER_BYTES,
+    ROW_BUFFERS,
 };
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Material, Real};
@@ -79,18 +79,21 @@ fn build_in<T: Real>(a: &TableArgs) -> Result<(Vec<u8>, String), String> {
         n_load: a.loads,
         grid_step: t(0.05),
         equilibrium_roll: a.equilibrium_roll,
+        refine_tol: t(a.refine_tol),
+        max_dy_nodes: a.max_dy_nodes,
     };
     let setup = setup::<T>(&a.wr, 1360.0);
     let mat = Material::<T>::identical(t(a.e_mpa), t(a.nu)).map_err(crate::validate::kernel_msg)?;
     let cfg = WheelConfig::recommended(t(0.3), t(200.0 / 3.6 * 1e3), setup.r0);
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, SLOTS, STRIPS)];
-    let mut rows = vec![TableSlot::<T, STRIPS>::EMPTY; 2 * SLOTS * spec.n_load];
+    let mut out = vec![0u8; spec.capacity_bytes(SLOTS, STRIPS)];
+    let mut rows = vec![TableSlot::<T, STRIPS>::EMPTY; ROW_BUFFERS * SLOTS * spec.n_load];
     let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
     let t0 = std::time::Instant::now();
     let rep = build_table::<T, NODES, NODES, SLOTS, STRIPS, 4, 128, 256, 4, 32, 32, 128>(
         &rail, &wheel, &setup, side, &mat, &cfg, &spec, &mut rows, &mut ws, &mut out,
     )
     .map_err(|e| format!("table build: {e}"))?;
+    out.truncate(rep.bytes);
     let secs = t0.elapsed().as_secs_f64();
     let mut s = String::new();
     let _ = writeln!(
@@ -100,7 +103,7 @@ fn build_in<T: Real>(a: &TableArgs) -> Result<(Vec<u8>, String), String> {
         a.out.display(),
         rep.bytes,
         a.precision,
-        n_dy,
+        rep.dy_nodes,
         a.loads,
         a.dy_from,
         a.dy_to,

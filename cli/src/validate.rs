@@ -210,6 +210,13 @@ pub fn check_table(a: &TableArgs) -> Result<(), String> {
         " mm",
         "shift step, mm",
     )?;
+    within("refine-tol", a.refine_tol, 0.0, 1.0, "")?;
+    if !(2..=4096).contains(&a.max_dy_nodes) {
+        return Err(format!(
+            "--max-dy-nodes {}: accepted 2..=4096",
+            a.max_dy_nodes
+        ));
+    }
     let n = ((a.dy_to - a.dy_from) / a.dy_step).round() + 1.0;
     if !(2.0..=4096.0).contains(&n) {
         return Err(format!(

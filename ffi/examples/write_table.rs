@@ -1,5 +1,5 @@
 //! Writes the S1002/UIC60 contact table of the C tests (1353 mm back-to-back, right wheel,
-//! equilibrium roll, dy −8…4 mm every 0.25 mm × 15–260 kN in 5 log-spaced loads, 3 slots × 32
+//! equilibrium roll, dy −8…4 mm every 0.25 mm refined to 1 % (71 nodes) × 15–260 kN in 5 log-spaced loads, 3 slots × 32
 //! strips) to a file, for C programs (`wrc_table_check_*`, `wrc_step_*`; format: docs/ffi.md).
 //!
 //! Run: `cargo run --release -p wrc-ffi --example write_table -- OUT.wrct [f32]` (f64 unless `f32`).
@@ -13,8 +13,8 @@ const ST: usize = 32;
 fn table<T: Real>() -> Result<Vec<u8>, String> {
     let (out, rep) = s1002_uic60_table::<T, K, ST>(&standard_spec()).map_err(|e| e.to_string())?;
     eprintln!(
-        "{} nodes ({} not converged), {} slots used, {} bytes",
-        rep.nodes, rep.not_converged, rep.slots_used, rep.bytes
+        "{} shift nodes, {} nodes solved ({} not converged), {} slots used, {} bytes",
+        rep.dy_nodes, rep.nodes, rep.not_converged, rep.slots_used, rep.bytes
     );
     Ok(out)
 }

@@ -36,8 +36,9 @@ use wrc_kernel::{Error, Real};
 pub const WRC_MAX_SLOTS: usize = 4;
 /// Most strips per slot a table may have for this library's step.
 pub const WRC_MAX_STRIPS: usize = 64;
-/// Table format version this library reads.
-pub const WRC_TABLE_VERSION: u32 = 1;
+/// Table format version this library reads (2: explicit shift nodes; version 1 tables are
+/// rejected with [`wrc_status::WRC_ERR_TABLE_VERSION`]: rebuild them).
+pub const WRC_TABLE_VERSION: u32 = 2;
 /// Size of a table's header, bytes.
 pub const WRC_TABLE_HEADER_BYTES: usize = 128;
 
@@ -107,7 +108,7 @@ impl From<Error> for wrc_status {
                 "shorter than the header" | "length" => WRC_ERR_TABLE_LENGTH,
                 "payload checksum" => WRC_ERR_TABLE_CHECKSUM,
                 "magic" => WRC_ERR_TABLE_MAGIC,
-                "format version" => WRC_ERR_TABLE_VERSION,
+                "format version" | "format version 1: rebuild the table" => WRC_ERR_TABLE_VERSION,
                 "precision differs from the caller's" => WRC_ERR_TABLE_PRECISION,
                 _ => WRC_ERR_BAD_TABLE,
             },
@@ -592,8 +593,10 @@ fn table_size(
         .checked_mul(slot)?
         .checked_add(NODE_FIXED)?;
     let nodes = (n_dy as usize).checked_mul(n_load as usize)?;
+    // header, the n_dy shift nodes, the payload
     nodes
         .checked_mul(node)?
+        .checked_add(n_dy as usize)?
         .checked_mul(value_bytes)?
         .checked_add(HEADER_BYTES)
 }

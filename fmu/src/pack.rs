@@ -2,7 +2,7 @@
 //!
 //! The table is the one `wrc table --back-to-back 1353 --equilibrium-roll --out table.bin`
 //! writes: built-in S1002 wheel / UIC60 rail, right wheel, f64, shift −4 … 8 mm towards the
-//! wheel every 0.25 mm, F_z 15 … 260 kN in 5 log-spaced loads, 3 slots × 16 strips, steel
+//! wheel, coarse nodes every 0.25 mm refined to 1 % (at most 71 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, 3 slots × 16 strips, steel
 //! (E 205 900 MPa, ν 0.28), gauge 1435 mm, gauge depth 14 mm, no cant, r0 460 mm — the same
 //! kernel call with the same arguments as `cli/src/realtime.rs`.
 
@@ -13,7 +13,7 @@ use wrc_host_tests::profiles::{
 };
 use wrc_kernel::geometry::{Side, TrackSetup};
 use wrc_kernel::profile::{ProfileKind, ProfileTable};
-use wrc_kernel::table::{build_table, table_bytes, BuildReport, TableSlot, TableSpec};
+use wrc_kernel::table::{build_table, BuildReport, TableSlot, TableSpec, ROW_BUFFERS};
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::Material;
 
@@ -53,6 +53,9 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
         n_load: 5,
         grid_step: 0.05,
         equilibrium_roll: true,
+        // `wrc table`'s defaults (--refine-tol, --max-dy-nodes)
+        refine_tol: 0.01,
+        max_dy_nodes: 71,
     };
     let setup = TrackSetup {
         gauge: 1435.0,
@@ -65,8 +68,8 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
     let mat = Material::<f64>::identical(205_900.0, 0.28).map_err(|e| e.to_string())?;
     let cfg = WheelConfig::recommended(0.3, 200.0 / 3.6 * 1e3, setup.r0);
     let k = crate::model::SLOTS;
-    let mut out = vec![0u8; table_bytes::<f64>(spec.n_dy, spec.n_load, k, STRIPS)];
-    let mut rows = vec![TableSlot::<f64, STRIPS>::EMPTY; 2 * k * spec.n_load];
+    let mut out = vec![0u8; spec.capacity_bytes(k, STRIPS)];
+    let mut rows = vec![TableSlot::<f64, STRIPS>::EMPTY; ROW_BUFFERS * k * spec.n_load];
     let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     let rep = build_table::<f64, NODES, NODES, 3, STRIPS, 4, 128, 256, 4, 32, 32, 128>(
         &rail,
@@ -81,6 +84,7 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
         &mut out,
     )
     .map_err(|e| format!("table build: {e}"))?;
+    out.truncate(rep.bytes);
     Ok((out, rep))
 }
 

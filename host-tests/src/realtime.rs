@@ -3,14 +3,20 @@
 //! (zero creepage, so the table does not depend on them), on the host with heap scratch.
 
 use wrc_kernel::geometry::{Side, TrackSetup};
-use wrc_kernel::table::{build_table, table_bytes, BuildReport, TableSlot, TableSpec};
+use wrc_kernel::table::{build_table, BuildReport, TableSlot, TableSpec, ROW_BUFFERS};
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Error, Material, Real};
 
 use crate::profiles::{manchester_tables, SmoothOptions};
 
-/// The examples' grid: equilibrium roll, dy −8 … 4 mm (+left) every 0.25 mm × F 15 … 260 kN in 5
-/// log-spaced loads, placement grid 0.05 mm.
+/// Refinement tolerance of the examples' shift grid ([`TableSpec::refine_tol`]).
+pub const REFINE_TOL: f64 = 0.01;
+/// Most shift nodes of the examples' grid ([`TableSpec::max_dy_nodes`]).
+pub const MAX_DY_NODES: usize = 71;
+
+/// The examples' grid: equilibrium roll, dy −8 … 4 mm (+left), coarse nodes every 0.25 mm refined
+/// to [`REFINE_TOL`] with at most [`MAX_DY_NODES`] shift nodes (71: the f32 3 × 16 table stays
+/// within 256 KiB) × F 15 … 260 kN in 5 log-spaced loads, placement grid 0.05 mm.
 pub fn standard_spec<T: Real>() -> TableSpec<T> {
     TableSpec {
         dy_min: T::from_f64(-8.0),
@@ -21,6 +27,8 @@ pub fn standard_spec<T: Real>() -> TableSpec<T> {
         n_load: 5,
         grid_step: T::from_f64(0.05),
         equilibrium_roll: true,
+        refine_tol: T::from_f64(REFINE_TOL),
+        max_dy_nodes: MAX_DY_NODES,
     }
 }
 
@@ -37,8 +45,8 @@ pub fn s1002_uic60_table<T: Real, const K: usize, const ST: usize>(
         back_to_back: T::from_f64(1353.0),
         ..TrackSetup::standard()
     };
-    let mut out = vec![0u8; table_bytes::<T>(spec.n_dy, spec.n_load, K, ST)];
-    let mut rows = vec![TableSlot::<T, ST>::EMPTY; 2 * K * spec.n_load];
+    let mut out = vec![0u8; spec.capacity_bytes(K, ST)];
+    let mut rows = vec![TableSlot::<T, ST>::EMPTY; ROW_BUFFERS * K * spec.n_load];
     let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
     let speed = T::from_f64(100.0 / 3.6 * 1000.0);
     let cfg = WheelConfig::recommended(T::from_f64(0.3), speed, T::from_f64(460.0));
@@ -54,5 +62,6 @@ pub fn s1002_uic60_table<T: Real, const K: usize, const ST: usize>(
         &mut ws,
         &mut out,
     )?;
+    out.truncate(rep.bytes);
     Ok((out, rep))
 }

@@ -59,8 +59,9 @@ pub const STEP_SPEED: f64 = 100.0 / 3.6 * 1000.0;
 pub const STEP_R0: f64 = 460.0;
 
 /// The grid of the step cases' contact table, as `bench/examples/realtime_step.rs` and
-/// `host-tests/tests/realtime_step.rs`: dy −8…4 mm every 0.25 mm × 15–260 kN in 5 log-spaced
-/// loads, 0.05 mm gap grid, equilibrium roll.
+/// `host-tests/tests/realtime_step.rs` (`wrc_host_tests::realtime::standard_spec`): dy −8…4 mm
+/// every 0.25 mm refined to 1 % (at most 71 shift nodes) × 15–260 kN in 5 log-spaced loads,
+/// 0.05 mm gap grid, equilibrium roll.
 pub fn step_spec<T: Real>() -> TableSpec<T> {
     TableSpec {
         dy_min: T::from_f64(-8.0),
@@ -71,6 +72,8 @@ pub fn step_spec<T: Real>() -> TableSpec<T> {
         n_load: 5,
         grid_step: T::from_f64(0.05),
         equilibrium_roll: true,
+        refine_tol: T::from_f64(0.01),
+        max_dy_nodes: 71,
     }
 }
 

@@ -70,13 +70,13 @@ fn run() -> Result<(), String> {
     wrc_fmu::pack::write_fmu(&out, &library, &table)?;
     println!(
         "{}: modelDescription.xml (GUID {}), binaries/linux64/wrc.so ({} bytes, from {}), \
-         resources/table.bin ({} bytes, {} nodes, {} slots used; built in {:.1} s)",
+         resources/table.bin ({} bytes, {} shift nodes, {} slots used; built in {:.1} s)",
         out.display(),
         wrc_fmu::xml::guid(),
         library.len(),
         lib.display(),
         table.len(),
-        rep.nodes,
+        rep.dy_nodes,
         rep.slots_used,
         t0.elapsed().as_secs_f64()
     );

@@ -27,17 +27,32 @@
 //! the frame of its nearest node with a patch, so that interpolation fades a patch in and out
 //! continuously (the load goes to 0, the frame does not jump).
 //!
+//! # The shift grid (format version 2)
+//! The shift nodes are explicit and need not be evenly spaced: [`build_table`] starts from
+//! [`TableSpec::n_dy`] evenly spaced nodes and bisects an interval while the exact solution at its
+//! midpoint differs from the linear interpolation of its end nodes by more than
+//! [`TableSpec::refine_tol`] (per slot and load: pmax relative to the node's largest pmax, area
+//! relative to the node's total area, load share absolute), at most [`REFINE_DEPTH`] times per
+//! coarse interval and up to [`TableSpec::max_dy_nodes`] nodes in all. The step locates the shift
+//! interval by a binary search of a fixed [`DY_HALVINGS`] halvings (any table, any shift).
+//!
 //! # Bytes (format version [`VERSION`])
 //! A table is plain bytes (a rig keeps it in flash and the step reads it in place): a header of
-//! [`HEADER_BYTES`] bytes, then the payload of `T` values, little-endian, node-major (dy outer,
-//! load inner), each node [`NODE_FIXED`] values then `K` slots of [`SLOT_FIXED`] + 3·`ST` values.
+//! [`HEADER_BYTES`] bytes, then the `n_dy` shift nodes (mm, `T`, strictly increasing, the first
+//! = dy_min and the last = dy_max of the header), then the payload of `T` values, little-endian,
+//! node-major (dy outer, load inner), each node [`NODE_FIXED`] values then `K` slots of
+//! [`SLOT_FIXED`] + 3·`ST` values.
 //! Header fields, little-endian at fixed offsets: magic `b"WRCTABLE"` (0), version u32 (8),
-//! bytes per value u32 (12: 4 = f32, 8 = f64), n_dy u32 (16), n_load u32 (20), slots K u32 (24),
-//! strips ST u32 (28), side u32 (32: 0 left, 1 right), equilibrium roll u32 (36), then f64:
-//! dy_min (40), dy_max (48), f_min (56), f_max (64), E* (72), ν (80), back-to-back (88), gauge
-//! (96), then u64 checksums (FNV-1a 64): rail profile (104), wheel profile (112), payload (120).
-//! [`ContactTable::from_bytes`] checks every field, the length and the payload checksum before
-//! use; a wrong, truncated or damaged table is [`Error::BadTable`], never a panic.
+//! bytes per value u32 (12: 4 = f32, 8 = f64), n_dy u32 (16: shift nodes, the length of the node
+//! array), n_load u32 (20), slots K u32 (24), strips ST u32 (28), side u32 (32: 0 left, 1 right),
+//! equilibrium roll u32 (36), then f64: dy_min (40), dy_max (48), f_min (56), f_max (64), E* (72),
+//! ν (80), back-to-back (88), gauge (96), then u64 checksums (FNV-1a 64): rail profile (104),
+//! wheel profile (112), node array and payload (120: every byte after the header).
+//! [`ContactTable::from_bytes`] checks every field, the length, the nodes (finite, strictly
+//! increasing, ends equal to dy_min and dy_max) and the checksum before use; a wrong, truncated or
+//! damaged table is [`Error::BadTable`], never a panic. Version 1 tables (evenly spaced shifts,
+//! no node array) are rejected with [`Error::BadTable`]`("format version 1: rebuild the table")`:
+//! rebuild them (`wrc table`), they are derived data.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
@@ -53,7 +68,17 @@ use core::marker::PhantomData;
 /// Format magic.
 pub const MAGIC: [u8; 8] = *b"WRCTABLE";
 /// Format version of the byte layout.
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
+/// Most shift nodes of a table.
+pub const MAX_DY_NODES: usize = 4096;
+/// Halvings of the step's binary search for the shift interval: ⌈log₂ [`MAX_DY_NODES`]⌉, the
+/// same for every table and shift.
+pub const DY_HALVINGS: u32 = 12;
+/// Most bisections of one coarse shift interval by [`build_table`]'s refinement (the finest
+/// spacing is the coarse one / 2^`REFINE_DEPTH`).
+pub const REFINE_DEPTH: usize = 5;
+/// Shift rows of scratch [`build_table`] needs (`ROW_BUFFERS`·`K`·`n_load` [`TableSlot`]s).
+pub const ROW_BUFFERS: usize = 3;
 /// Header size, bytes.
 pub const HEADER_BYTES: usize = 128;
 /// Values per node before the slots: roll (rad), wheel centre height cz (mm), δ_v/F^{2/3}.
@@ -98,7 +123,7 @@ pub struct TableSpec<T> {
     pub dy_min: T,
     /// Highest lateral shift, mm.
     pub dy_max: T,
-    /// Shift nodes (≥ 2), evenly spaced.
+    /// Coarse shift nodes (≥ 2), evenly spaced; [`TableSpec::refine_tol`] adds nodes between them.
     pub n_dy: usize,
     /// Lowest vertical load, N.
     pub f_min: T,
@@ -111,6 +136,32 @@ pub struct TableSpec<T> {
     /// Build every shift at the two-wheel equilibrium roll ([`equilibrium_roll`], yaw 0) instead
     /// of roll 0.
     pub equilibrium_roll: bool,
+    /// Refinement tolerance of the shift grid (module docs; 0: the coarse grid only): an interval
+    /// is bisected while its midpoint's pmax, area or load share differs from the interpolation
+    /// by more than this (relative to the node's pmax and area, absolute for the share).
+    pub refine_tol: T,
+    /// Most shift nodes after refinement (≤ [`MAX_DY_NODES`]; below `n_dy`: `n_dy`). Refinement
+    /// stops when it is reached (the remaining coarse nodes are always kept).
+    pub max_dy_nodes: usize,
+}
+
+impl<T: Real> TableSpec<T> {
+    /// Most shift nodes a build of this spec can produce: max(`n_dy`, `max_dy_nodes`) when
+    /// refining, else `n_dy`.
+    pub fn dy_capacity(&self) -> usize {
+        if self.refine_tol > T::ZERO {
+            self.n_dy.max(self.max_dy_nodes)
+        } else {
+            self.n_dy
+        }
+    }
+
+    /// Bytes of output buffer a build of this spec needs with `k` slots of `st` strips
+    /// ([`table_bytes`] at [`TableSpec::dy_capacity`] nodes; the table itself is
+    /// [`BuildReport::bytes`] long).
+    pub fn capacity_bytes(&self, k: usize, st: usize) -> usize {
+        table_bytes::<T>(self.dy_capacity(), self.n_load, k, st)
+    }
 }
 
 /// Validated header of a table.
@@ -118,7 +169,7 @@ pub struct TableSpec<T> {
 pub struct TableHeader {
     /// Bytes per value (4: f32, 8: f64).
     pub value_bytes: usize,
-    /// Shift nodes.
+    /// Shift nodes (the length of the node array).
     pub n_dy: usize,
     /// Load nodes.
     pub n_load: usize,
@@ -161,13 +212,18 @@ impl TableHeader {
     }
     /// Total size of the table, bytes.
     pub fn total_bytes(&self) -> usize {
-        HEADER_BYTES + self.n_dy * self.n_load * self.node_values() * self.value_bytes
+        HEADER_BYTES
+            + self.n_dy * self.value_bytes
+            + self.n_dy * self.n_load * self.node_values() * self.value_bytes
     }
 }
 
-/// Size in bytes of a table with this grid, `K` slots and `ST` strips in precision `T`.
+/// Size in bytes of a table with `n_dy` shift × `n_load` load nodes, `k` slots and `st` strips
+/// in precision `T` (header, node array, payload).
 pub fn table_bytes<T: Real>(n_dy: usize, n_load: usize, k: usize, st: usize) -> usize {
-    HEADER_BYTES + n_dy * n_load * (NODE_FIXED + k * (SLOT_FIXED + 3 * st)) * T::BYTES
+    HEADER_BYTES
+        + n_dy * T::BYTES
+        + n_dy * n_load * (NODE_FIXED + k * (SLOT_FIXED + 3 * st)) * T::BYTES
 }
 
 /// FNV-1a 64-bit over `bytes`, continuing from `h` (start with [`FNV_OFFSET`]).
@@ -197,6 +253,7 @@ pub fn profile_checksum<T: Real, const N: usize>(p: &ProfileTable<T, N>) -> u64 
 pub struct ContactTable<'a, T> {
     /// The header.
     pub header: TableHeader,
+    nodes: &'a [u8],
     payload: &'a [u8],
     node_values: usize,
     _t: PhantomData<T>,
@@ -217,16 +274,16 @@ fn f64_at(b: &[u8], o: usize) -> f64 {
 }
 
 impl<'a, T: Real> ContactTable<'a, T> {
-    /// Validates `bytes` (magic, version, precision = `T`, counts, grid, length, payload
-    /// checksum) and borrows them.
+    /// Validates `bytes` (magic, version, precision = `T`, counts, grid, length, checksum, shift
+    /// nodes) and borrows them.
     ///
     /// Errors: [`Error::BadTable`] naming the first check that failed.
     pub fn from_bytes(bytes: &'a [u8]) -> Result<Self, Error> {
         Self::parse(bytes, true)
     }
 
-    /// As [`ContactTable::from_bytes`] but without the payload checksum: every header field and
-    /// the length are checked (O(1)), the payload is not hashed. For bytes that were verified
+    /// As [`ContactTable::from_bytes`] but without the checksum and the node check: every header
+    /// field and the length are checked (O(1)), the node array and payload are not read. For bytes that were verified
     /// once with [`ContactTable::from_bytes`] (at start-up) and kept unchanged since, so that a
     /// per-step caller (the C interface) need not hash the whole table on every call. A damaged
     /// payload read this way gives wrong numbers, never a panic (reads are bounds-checked).
@@ -243,8 +300,10 @@ impl<'a, T: Real> ContactTable<'a, T> {
         if bytes[..8] != MAGIC {
             return Err(Error::BadTable("magic"));
         }
-        if u32_at(bytes, 8) != VERSION {
-            return Err(Error::BadTable("format version"));
+        match u32_at(bytes, 8) {
+            VERSION => {}
+            1 => return Err(Error::BadTable("format version 1: rebuild the table")),
+            _ => return Err(Error::BadTable("format version")),
         }
         let vb = u32_at(bytes, 12) as usize;
         if vb != T::BYTES {
@@ -278,7 +337,7 @@ impl<'a, T: Real> ContactTable<'a, T> {
             wheel_checksum: u64_at(bytes, 112),
             payload_checksum: u64_at(bytes, 120),
         };
-        let counts_ok = (2..=4096).contains(&h.n_dy)
+        let counts_ok = (2..=MAX_DY_NODES).contains(&h.n_dy)
             && (2..=256).contains(&h.n_load)
             && (1..=16).contains(&h.slots)
             && (2..=256).contains(&h.strips);
@@ -301,16 +360,31 @@ impl<'a, T: Real> ContactTable<'a, T> {
         if bytes.len() != h.total_bytes() {
             return Err(Error::BadTable("length"));
         }
-        let payload = &bytes[HEADER_BYTES..];
-        if checksum && fnv1a(FNV_OFFSET, payload) != h.payload_checksum {
+        let (nodes, payload) = bytes[HEADER_BYTES..].split_at(h.n_dy * T::BYTES);
+        if checksum && fnv1a(FNV_OFFSET, &bytes[HEADER_BYTES..]) != h.payload_checksum {
             return Err(Error::BadTable("payload checksum"));
         }
-        Ok(Self {
+        let t = Self {
             header: h,
+            nodes,
             payload,
             node_values: h.node_values(),
             _t: PhantomData,
-        })
+        };
+        if checksum {
+            // the node array: finite, strictly increasing, from dy_min to dy_max
+            let mut last = t.dy_node(0);
+            let mut ok = T::is_finite(last) && last == T::from_f64(h.dy_min);
+            for i in 1..h.n_dy {
+                let d = t.dy_node(i);
+                ok &= T::is_finite(d) && d > last;
+                last = d;
+            }
+            if !ok || last != T::from_f64(h.dy_max) {
+                return Err(Error::BadTable("shift nodes"));
+            }
+        }
+        Ok(t)
     }
 
     /// Slots per node.
@@ -341,10 +415,14 @@ impl<'a, T: Real> ContactTable<'a, T> {
         NODE_FIXED + k * (SLOT_FIXED + 3 * self.header.strips)
     }
 
-    /// Shift of node `i`, mm.
+    /// Shift of node `i`, mm, from the node array (beyond it: 0).
+    #[inline]
     pub fn dy_node(&self, i: usize) -> T {
-        let h = &self.header;
-        T::from_f64(h.dy_min + (h.dy_max - h.dy_min) * i as f64 / (h.n_dy - 1) as f64)
+        let o = i * T::BYTES;
+        match self.nodes.get(o..o + T::BYTES) {
+            Some(b) => T::read_le(b),
+            None => T::ZERO,
+        }
     }
 
     /// Load of node `j`, N.
@@ -360,8 +438,10 @@ impl<'a, T: Real> ContactTable<'a, T> {
 /// What a table build did.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct BuildReport {
-    /// Nodes solved.
+    /// Nodes solved (the table's and the refinement's trial midpoints and re-solves).
     pub nodes: usize,
+    /// Shift nodes of the table.
+    pub dy_nodes: usize,
     /// Nodes whose solve did not meet its tolerances (their result is stored, flagged here).
     pub not_converged: usize,
     /// Most patches seen at one node.
@@ -391,8 +471,8 @@ impl NodeWriter<'_> {
     }
 }
 
-/// Scratch slot of a table build (one per slot and load node of a shift row; a build needs two
-/// rows, 2·`K`·`n_load` of them).
+/// Scratch slot of a table build (one per slot and load node of a shift row; a build needs
+/// [`ROW_BUFFERS`] rows, `ROW_BUFFERS`·`K`·`n_load` of them).
 #[derive(Clone, Copy, Debug)]
 pub struct TableSlot<T, const ST: usize> {
     present: bool,
@@ -419,17 +499,26 @@ impl<T: Real, const ST: usize> TableSlot<T, ST> {
 
 /// Builds the contact table of (`rail`, `wheel`, `setup`, `side`, `mat`) on `spec`'s grid with
 /// the solver configuration `cfg` (its pipeline and patch options; its creepage is replaced by
-/// zero) into `out` (at least [`table_bytes`] bytes; the rest is left untouched). `K` slots of
-/// `ST` strips; `nodes` is scratch for one shift row of `spec.n_load` nodes (`K`·`n_load`
-/// [`TableSlot`]s are needed: pass at least that many), `ws` the solver's workspace.
+/// zero) into `out`, which must hold at least [`TableSpec::capacity_bytes`] bytes: the table is
+/// its first [`BuildReport::bytes`] bytes, the bytes after it up to the capacity are overwritten
+/// (build scratch), the rest is left untouched. `K` slots of `ST` strips; `rows` is scratch for
+/// [`ROW_BUFFERS`] shift rows of `spec.n_load` nodes (`ROW_BUFFERS`·`K`·`n_load`
+/// [`TableSlot`]s: pass at least that many), `ws` the solver's workspace.
+///
+/// The shift grid: the `n_dy` evenly spaced coarse nodes, each coarse interval bisected while
+/// the midpoint's exact solution differs from the interpolation of the interval's ends by more
+/// than `spec.refine_tol` (module docs), at most [`REFINE_DEPTH`] levels, up to
+/// `spec.max_dy_nodes` nodes. Rows are visited in increasing dy: a trial midpoint is solved
+/// with the slots continued from the last accepted row, as the row would be if it were kept.
 ///
 /// Deterministic: the same inputs give the same bytes on every machine with IEEE arithmetic of
 /// `T` (the solve is).
 ///
 /// Errors: those of the geometry and the solver at a node (a shift or load where the profiles
 /// give no contact is an error: choose the grid inside the profiles' range), `OutOfRange` for
-/// a grid that is too small or a row scratch that is too short, `TooManyRegions` when more than
-/// `K` slots would be needed, [`Error::BadTable`] when `out` is too small.
+/// a grid that is too small or too large, a negative or NaN tolerance or a row scratch that is
+/// too short, `TooManyRegions` when more than `K` slots would be needed, [`Error::BadTable`]
+/// when `out` is too small.
 #[allow(clippy::too_many_arguments)]
 pub fn build_table<
     T: Real,
@@ -464,18 +553,25 @@ pub fn build_table<
     if !(spec.dy_max > spec.dy_min) || !(spec.f_max > spec.f_min) {
         return Err(Error::OutOfRange("table grid"));
     }
-    if spec.n_dy < 2 || spec.n_load < 2 || spec.n_dy > 4096 || spec.n_load > 256 {
+    if spec.n_dy < 2 || spec.n_load < 2 || spec.n_dy > MAX_DY_NODES || spec.n_load > 256 {
         return Err(Error::OutOfRange("table node counts"));
+    }
+    if !(spec.refine_tol >= T::ZERO) || !T::is_finite(spec.refine_tol) {
+        return Err(Error::OutOfRange("refine_tol"));
+    }
+    let cap = spec.dy_capacity();
+    if cap > MAX_DY_NODES {
+        return Err(Error::OutOfRange("max_dy_nodes"));
     }
     if ST < 2 || K == 0 || K > 16 || ST > 256 {
         return Err(Error::OutOfRange("table slots or strips"));
     }
     let nl = spec.n_load;
-    if rows.len() < 2 * K * nl {
+    let row = K * nl;
+    if rows.len() < ROW_BUFFERS * row {
         return Err(Error::OutOfRange("row scratch"));
     }
-    let total = table_bytes::<T>(spec.n_dy, nl, K, ST);
-    if out.len() < total {
+    if out.len() < spec.capacity_bytes(K, ST) {
         return Err(Error::BadTable("output buffer too small"));
     }
     let mut c = *cfg;
@@ -485,20 +581,290 @@ pub fn build_table<
         phi: T::ZERO,
     });
     let mut rep = BuildReport::default();
-    let (prev, cur) = rows.split_at_mut(K * nl);
-    let prev = &mut prev[..K * nl];
-    let cur = &mut cur[..K * nl];
+    let (prev, rest) = rows.split_at_mut(row);
+    let (cand, rest) = rest.split_at_mut(row);
+    let mid = &mut rest[..row];
     for s in prev.iter_mut() {
         *s = TableSlot::EMPTY;
     }
+    let node_bytes = (NODE_FIXED + K * (SLOT_FIXED + 3 * ST)) * T::BYTES;
+    // rows are written after room for `cap` nodes and moved behind the node array at the end
+    let rows_at = HEADER_BYTES + cap * T::BYTES;
+    let mut geom = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
+    let mut ctx = RowSolve {
+        rail,
+        wheel,
+        setup,
+        side,
+        mat,
+        cfg: &c,
+        spec,
+        rep: &mut rep,
+    };
     // last rail-file y of every slot seen anywhere (slot identity for re-appearing patches)
     let mut last_y: [Option<T>; K] = [None; K];
-    let node_bytes = (NODE_FIXED + K * (SLOT_FIXED + 3 * ST)) * T::BYTES;
-    let payload = &mut out[HEADER_BYTES..total];
-    let mut geom = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
-    for i in 0..spec.n_dy {
-        let u = T::from_usize(i) / T::from_usize(spec.n_dy - 1);
-        let dy = spec.dy_min + (spec.dy_max - spec.dy_min) * u;
+    let mut fx_c = [[T::ZERO; NODE_FIXED]; 256];
+    let mut fx_m = [[T::ZERO; NODE_FIXED]; 256];
+    let coarse = |i: usize| {
+        if i == 0 {
+            spec.dy_min
+        } else if i + 1 == spec.n_dy {
+            spec.dy_max
+        } else {
+            let u = T::from_usize(i) / T::from_usize(spec.n_dy - 1);
+            spec.dy_min + (spec.dy_max - spec.dy_min) * u
+        }
+    };
+    // the first row
+    let stats = ctx.row(
+        &mut geom,
+        ws,
+        spec.dy_min,
+        prev,
+        T::ZERO,
+        cand,
+        &mut fx_c,
+        &mut last_y,
+    )?;
+    write_row::<T, K, ST>(out, rows_at, node_bytes, 0, spec.dy_min, &fx_c, cand, nl)?;
+    ctx.commit(stats);
+    prev.copy_from_slice(cand);
+    let mut n = 1usize;
+    // shifts of the last two accepted rows (the slots' linear prediction)
+    let (mut dl, mut dll) = (spec.dy_min, spec.dy_min);
+    let ratio = |d: T, dl: T, dll: T, n: usize| {
+        if n >= 2 {
+            (d - dl) / (dl - dll)
+        } else {
+            T::ZERO
+        }
+    };
+    // pending right ends: the coarse node, then midpoints (at most REFINE_DEPTH)
+    let mut stack = [T::ZERO; REFINE_DEPTH + 1];
+    for i in 1..spec.n_dy {
+        stack[0] = coarse(i);
+        let mut sp = 1usize;
+        // whether `cand` holds the row of stack[sp − 1] continued from the accepted row
+        let mut cand_ok = false;
+        let mut ly_c = last_y;
+        let mut st_c = (0, 0);
+        while sp > 0 {
+            let r = stack[sp - 1];
+            if !cand_ok {
+                ly_c = last_y;
+                st_c = ctx.row(
+                    &mut geom,
+                    ws,
+                    r,
+                    prev,
+                    ratio(r, dl, dll, n),
+                    cand,
+                    &mut fx_c,
+                    &mut ly_c,
+                )?;
+            }
+            let m = (dl + r) * T::HALF;
+            // nodes if m is added: accepted, pending, the coarse ones after i, m
+            let room = n + sp + (spec.n_dy - 1 - i) < cap;
+            if spec.refine_tol > T::ZERO && sp <= REFINE_DEPTH && room && m > dl && m < r {
+                let mut ly_m = last_y;
+                let st_m = ctx.row(
+                    &mut geom,
+                    ws,
+                    m,
+                    prev,
+                    ratio(m, dl, dll, n),
+                    mid,
+                    &mut fx_m,
+                    &mut ly_m,
+                )?;
+                let w = (m - dl) / (r - dl);
+                if interp_error::<T, K, ST>(prev, cand, mid, w, nl) > spec.refine_tol {
+                    stack[sp] = m;
+                    sp += 1;
+                    cand.swap_with_slice(mid);
+                    core::mem::swap(&mut fx_c, &mut fx_m);
+                    ly_c = ly_m;
+                    st_c = st_m;
+                    cand_ok = true;
+                    continue;
+                }
+            }
+            // accept the candidate row at r
+            write_row::<T, K, ST>(out, rows_at, node_bytes, n, r, &fx_c, cand, nl)?;
+            ctx.commit(st_c);
+            last_y = ly_c;
+            prev.copy_from_slice(cand);
+            dll = dl;
+            dl = r;
+            n += 1;
+            sp -= 1;
+            cand_ok = false;
+        }
+    }
+    let total = table_bytes::<T>(n, nl, K, ST);
+    let body = HEADER_BYTES + n * T::BYTES;
+    out.copy_within(rows_at..rows_at + n * nl * node_bytes, body);
+    // Slots that were empty at the start of the table (a patch appearing at a later shift) got
+    // no frame in their first rows: copy it back from the first row where the slot exists.
+    backfill_frames::<T, K, ST>(&mut out[body..total], n, nl, node_bytes)?;
+    let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..total]);
+    let hdr = &mut out[..HEADER_BYTES];
+    hdr.fill(0);
+    hdr[..8].copy_from_slice(&MAGIC);
+    let mut put32 = |o: usize, v: u32| hdr[o..o + 4].copy_from_slice(&v.to_le_bytes());
+    put32(8, VERSION);
+    put32(12, T::BYTES as u32);
+    put32(16, n as u32);
+    put32(20, nl as u32);
+    put32(24, K as u32);
+    put32(28, ST as u32);
+    put32(32, matches!(side, Side::Right) as u32);
+    put32(36, spec.equilibrium_roll as u32);
+    let mut put64 = |o: usize, v: u64| hdr[o..o + 8].copy_from_slice(&v.to_le_bytes());
+    put64(40, spec.dy_min.to_f64().to_bits());
+    put64(48, spec.dy_max.to_f64().to_bits());
+    put64(56, spec.f_min.to_f64().to_bits());
+    put64(64, spec.f_max.to_f64().to_bits());
+    put64(72, mat.e_star.to_f64().to_bits());
+    put64(80, mat.nu.to_f64().to_bits());
+    put64(88, setup.back_to_back.to_f64().to_bits());
+    put64(96, setup.gauge.to_f64().to_bits());
+    put64(104, profile_checksum(rail));
+    put64(112, profile_checksum(wheel));
+    put64(120, checksum);
+    rep.bytes = total;
+    rep.dy_nodes = n;
+    Ok(rep)
+}
+
+/// Largest difference, over the loads and slots, between the rows `m` and the interpolation
+/// `l` + w (`r` − `l`): pmax relative to the node's largest pmax, area relative to the node's
+/// total area, load share absolute.
+fn interp_error<T: Real, const K: usize, const ST: usize>(
+    l: &[TableSlot<T, ST>],
+    r: &[TableSlot<T, ST>],
+    m: &[TableSlot<T, ST>],
+    w: T,
+    nl: usize,
+) -> T {
+    let mut e = T::ZERO;
+    for j in 0..nl {
+        let v = |s: &[TableSlot<T, ST>], k: usize, f: SlotField| s[j * K + k].fixed[f as usize];
+        let (mut pref, mut aref) = (T::ZERO, T::ZERO);
+        for k in 0..K {
+            pref = math::max(pref, v(m, k, SlotField::Pmax));
+            aref += v(m, k, SlotField::Area);
+        }
+        for k in 0..K {
+            let d = |f: SlotField| {
+                let (a, b) = (v(l, k, f), v(r, k, f));
+                math::abs(a + (b - a) * w - v(m, k, f))
+            };
+            e = math::max(e, d(SlotField::Share));
+            if pref > T::ZERO {
+                e = math::max(e, d(SlotField::Pmax) / pref);
+            }
+            if aref > T::ZERO {
+                e = math::max(e, d(SlotField::Area) / aref);
+            }
+        }
+    }
+    e
+}
+
+/// Writes shift row `idx` (node dy and the row's `nl` nodes) of a build: the node into the node
+/// array, the row at `rows_at` + `idx`·`nl`·`node_bytes`.
+#[allow(clippy::too_many_arguments)]
+fn write_row<T: Real, const K: usize, const ST: usize>(
+    out: &mut [u8],
+    rows_at: usize,
+    node_bytes: usize,
+    idx: usize,
+    dy: T,
+    fixed: &[[T; NODE_FIXED]; 256],
+    cur: &[TableSlot<T, ST>],
+    nl: usize,
+) -> Result<(), Error> {
+    let o = HEADER_BYTES + idx * T::BYTES;
+    NodeWriter { out, pos: o }.put(dy)?;
+    for j in 0..nl {
+        let base = rows_at + (idx * nl + j) * node_bytes;
+        let dst = out
+            .get_mut(base..base + node_bytes)
+            .ok_or(Error::BadTable("output buffer too small"))?;
+        let mut w = NodeWriter { out: dst, pos: 0 };
+        for v in fixed[j] {
+            w.put(v)?;
+        }
+        for k in 0..K {
+            let s = &cur[j * K + k];
+            for v in s.fixed {
+                w.put(v)?;
+            }
+            for v in s.a {
+                w.put(v)?;
+            }
+            for v in s.p {
+                w.put(v)?;
+            }
+            for v in s.g {
+                w.put(v)?;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// What one shift row of a build needs besides its scratch.
+struct RowSolve<'r, T, const N: usize> {
+    rail: &'r ProfileTable<T, N>,
+    wheel: &'r ProfileTable<T, N>,
+    setup: &'r TrackSetup<T>,
+    side: Side,
+    mat: &'r Material<T>,
+    cfg: &'r WheelConfig<T>,
+    spec: &'r TableSpec<T>,
+    rep: &'r mut BuildReport,
+}
+
+impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
+    /// Counts an accepted row's (most patches at a node, slots used).
+    fn commit(&mut self, (patches, slots): (usize, usize)) {
+        self.rep.max_patches = self.rep.max_patches.max(patches);
+        self.rep.slots_used = self.rep.slots_used.max(slots);
+    }
+
+    /// Solves the row at shift `dy` into `cur` and `fixed`, its slots continued from the
+    /// accepted row `prev` (a slot present at `prev` and at the row before it is predicted
+    /// linearly: y + (y − y_before)·`ratio`, `ratio` = (dy − dy_prev)/(dy_prev − dy_before)).
+    /// Returns (most patches at a node, slots used).
+    #[allow(clippy::too_many_arguments)]
+    fn row<
+        const M: usize,
+        const K: usize,
+        const ST: usize,
+        const WK: usize,
+        const NP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    >(
+        &mut self,
+        geom: &mut WheelRail<'r, T, N, M>,
+        ws: &mut WheelWorkspace<T, WK, NP, NS, NR, S, C, SS>,
+        dy: T,
+        prev: &[TableSlot<T, ST>],
+        ratio: T,
+        cur: &mut [TableSlot<T, ST>],
+        fixed: &mut [[T; NODE_FIXED]; 256],
+        last_y: &mut [Option<T>; K],
+    ) -> Result<(usize, usize), Error> {
+        let spec = self.spec;
+        let nl = spec.n_load;
+        let (rail, wheel, setup, mat, c) = (self.rail, self.wheel, self.setup, self.mat, self.cfg);
         let roll = if spec.equilibrium_roll {
             equilibrium_roll::<T, N, M>(rail, wheel, setup, dy, T::ZERO, spec.grid_step)?.roll
         } else {
@@ -509,17 +875,17 @@ pub fn build_table<
             yaw: T::ZERO,
             roll,
         };
-        geom.place_in(rail, wheel, setup, &pose, side, spec.grid_step)?;
-        let mut fixed = [[T::ZERO; NODE_FIXED]; 256];
+        geom.place_in(rail, wheel, setup, &pose, self.side, spec.grid_step)?;
+        let (mut max_patches, mut slots_used) = (0usize, 0usize);
         for j in 0..nl {
             let uj = T::from_usize(j) / T::from_usize(nl - 1);
             let f = math::exp(math::ln(spec.f_min) * (T::ONE - uj) + math::ln(spec.f_max) * uj);
-            let res = solve_wheel(&geom, f, mat, &c, ws, &mut ())?;
-            rep.nodes += 1;
+            let res = solve_wheel(geom, f, mat, c, ws, &mut ())?;
+            self.rep.nodes += 1;
             if !res.converged {
-                rep.not_converged += 1;
+                self.rep.not_converged += 1;
             }
-            rep.max_patches = rep.max_patches.max(res.n);
+            max_patches = max_patches.max(res.n);
             let f13 = math::cbrt(f);
             let f23 = f13 * f13;
             fixed[j] = [roll, geom.wheel.cz, res.vertical_approach / f23];
@@ -536,7 +902,7 @@ pub fn build_table<
                 cand[k] = if p.present {
                     let y = p.fixed[SlotField::YRefRail as usize];
                     Some(match p.before {
-                        Some(yb) => y + y - yb,
+                        Some(yb) => y + (y - yb) * ratio,
                         None => y,
                     })
                 } else if j > 0 && cur[(j - 1) * K + k].present {
@@ -584,7 +950,7 @@ pub fn build_table<
                 };
                 taken[k] = true;
                 last_y[k] = Some(y);
-                rep.slots_used = rep.slots_used.max(k + 1);
+                slots_used = slots_used.max(k + 1);
                 let mut slot = TableSlot::EMPTY;
                 slot.present = true;
                 let pk = &prev[j * K + k];
@@ -600,7 +966,7 @@ pub fn build_table<
                 slot.fixed[SlotField::Approach as usize] = fr.approach / f23;
                 slot.fixed[SlotField::Pmax as usize] = wp.result.pmax / f13;
                 slot.fixed[SlotField::Area as usize] = wp.result.area / f23;
-                resolve_patch_strips(ws, q, wp.load, mat, &c)?;
+                resolve_patch_strips(ws, q, wp.load, mat, c)?;
                 resample(&ws.pipeline.set, wp.load, &mut slot)?;
                 for v in slot.a.iter_mut() {
                     *v /= f13;
@@ -645,63 +1011,8 @@ pub fn build_table<
                 }
             }
         }
-        for j in 0..nl {
-            let base = (i * nl + j) * node_bytes;
-            let mut w = NodeWriter {
-                out: &mut payload[base..base + node_bytes],
-                pos: 0,
-            };
-            for v in fixed[j] {
-                w.put(v)?;
-            }
-            for k in 0..K {
-                let s = &cur[j * K + k];
-                for v in s.fixed {
-                    w.put(v)?;
-                }
-                for v in s.a {
-                    w.put(v)?;
-                }
-                for v in s.p {
-                    w.put(v)?;
-                }
-                for v in s.g {
-                    w.put(v)?;
-                }
-            }
-        }
-        prev.copy_from_slice(cur);
+        Ok((max_patches, slots_used))
     }
-    // Slots that were empty at the start of the table (a patch appearing at a later shift) got
-    // no frame in their first rows: copy it back from the first row where the slot exists.
-    backfill_frames::<T, K, ST>(payload, spec.n_dy, nl, node_bytes)?;
-    let checksum = fnv1a(FNV_OFFSET, &payload[..]);
-    let hdr = &mut out[..HEADER_BYTES];
-    hdr.fill(0);
-    hdr[..8].copy_from_slice(&MAGIC);
-    let mut put32 = |o: usize, v: u32| hdr[o..o + 4].copy_from_slice(&v.to_le_bytes());
-    put32(8, VERSION);
-    put32(12, T::BYTES as u32);
-    put32(16, spec.n_dy as u32);
-    put32(20, nl as u32);
-    put32(24, K as u32);
-    put32(28, ST as u32);
-    put32(32, matches!(side, Side::Right) as u32);
-    put32(36, spec.equilibrium_roll as u32);
-    let mut put64 = |o: usize, v: u64| hdr[o..o + 8].copy_from_slice(&v.to_le_bytes());
-    put64(40, spec.dy_min.to_f64().to_bits());
-    put64(48, spec.dy_max.to_f64().to_bits());
-    put64(56, spec.f_min.to_f64().to_bits());
-    put64(64, spec.f_max.to_f64().to_bits());
-    put64(72, mat.e_star.to_f64().to_bits());
-    put64(80, mat.nu.to_f64().to_bits());
-    put64(88, setup.back_to_back.to_f64().to_bits());
-    put64(96, setup.gauge.to_f64().to_bits());
-    put64(104, profile_checksum(rail));
-    put64(112, profile_checksum(wheel));
-    put64(120, checksum);
-    rep.bytes = total;
-    Ok(rep)
 }
 
 /// Copies, for every slot of every node that has no frame yet (all fixed values 0), the frame of
@@ -842,4 +1153,36 @@ fn resample<T: Real, const SS: usize, const NR: usize, const ST: usize>(
         *p *= s;
     }
     Ok(())
+}
+
+/// Writes the f32 copy of the f64 table `src` into `out` (at least [`table_bytes`]`::<f32>` of
+/// its grid): the same header with 4 bytes per value, every node and payload value rounded to
+/// f32, the checksum recomputed. An f32 table made this way carries the f64 solve rounded once,
+/// instead of the solve in f32 ([`build_table`] in f32); the grid (shift nodes included) is the
+/// f64 build's. Returns the bytes written.
+///
+/// Errors: those of [`ContactTable::from_bytes`] for `src` (as f64), [`Error::BadTable`] when
+/// `out` is too small.
+pub fn narrow_to_f32(src: &[u8], out: &mut [u8]) -> Result<usize, Error> {
+    let t = ContactTable::<f64>::from_bytes(src)?;
+    let h = t.header;
+    let total = table_bytes::<f32>(h.n_dy, h.n_load, h.slots, h.strips);
+    let out = out
+        .get_mut(..total)
+        .ok_or(Error::BadTable("output buffer too small"))?;
+    out[..HEADER_BYTES].copy_from_slice(&src[..HEADER_BYTES]);
+    out[12..16].copy_from_slice(&4u32.to_le_bytes());
+    for (d, s) in out[HEADER_BYTES..]
+        .chunks_exact_mut(4)
+        .zip(src[HEADER_BYTES..].chunks_exact(8))
+    {
+        let mut w = [0u8; 8];
+        w.copy_from_slice(s);
+        d.copy_from_slice(&(f64::from_le_bytes(w) as f32).to_le_bytes());
+    }
+    let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..]);
+    out[120..128].copy_from_slice(&checksum.to_le_bytes());
+    // the rounded nodes must still be a valid grid
+    ContactTable::<f32>::from_bytes(out)?;
+    Ok(total)
 }

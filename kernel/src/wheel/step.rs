@@ -2,8 +2,10 @@
 //! fixed cost — no data-dependent iteration anywhere.
 //!
 //! Per call, top-down:
-//! 1. **Cell of the table**: the shift `pose.dy` and the load locate one table cell (linear in dy,
-//!    linear in ln F); a shift or load outside the table is `OutOfRange`, never extrapolated.
+//! 1. **Cell of the table**: the shift `pose.dy` is located among the table's (not necessarily
+//!    evenly spaced) shift nodes by a binary search of a fixed [`DY_HALVINGS`] halvings, once per
+//!    call; the load then locates the cell (linear in dy, linear in ln F); a shift or load
+//!    outside the table is `OutOfRange`, never extrapolated.
 //! 2. **Vertical balance** (fixed [`BALANCE_STEPS`] steps): the table's load coordinate F (the
 //!    load at which Σ_k N_k cos δ_k = F) solves F · Σ_k s_k(F)(cos δ_k(F) + r_k e_k(F)) = F_z,
 //!    s_k = N_k/F the slot's load share, e_k = ∓ sin δ_k (right/left wheel) the vertical
@@ -35,7 +37,7 @@ use crate::geometry::{creepages_at, Kinematics, PatchFrame, Side, WheelsetPose};
 use crate::kalker;
 use crate::math::{self, c};
 use crate::patch::{Creepage, Strip};
-use crate::table::{ContactTable, SlotField, NODE_FIXED, SLOT_FIXED};
+use crate::table::{ContactTable, SlotField, DY_HALVINGS, NODE_FIXED, SLOT_FIXED};
 use crate::{Material, Real};
 
 /// Fixed-point steps of the vertical balance per round.
@@ -98,6 +100,41 @@ pub struct StepInput<T> {
     pub mu: T,
 }
 
+/// Shift interval of the table at dy: nodes `i`, `i` + 1 and the weight of `i` + 1.
+#[derive(Clone, Copy)]
+struct Shift<T> {
+    i: usize,
+    f: T,
+}
+
+/// Locates dy among the table's shift nodes by a binary search of a fixed [`DY_HALVINGS`]
+/// halvings (⌈log₂⌉ of the largest node count: every table and shift takes the same count).
+fn shift<T: Real>(t: &ContactTable<'_, T>, dy: T) -> Result<Shift<T>, Error> {
+    let n = t.header.n_dy;
+    let (d0, d1) = (t.dy_node(0), t.dy_node(n - 1));
+    if !(dy >= d0 && dy <= d1) {
+        return Err(Error::OutOfRange("lateral shift outside the contact table"));
+    }
+    // invariant: node(lo) ≤ dy, and dy < node(hi) or hi = n − 1; lo < hi
+    let (mut lo, mut hi) = (0usize, n - 1);
+    for _ in 0..DY_HALVINGS {
+        let mid = (lo + hi) / 2;
+        if t.dy_node(mid) <= dy {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let i = lo.min(n - 2);
+    let (a, b) = (t.dy_node(i), t.dy_node(i + 1));
+    let f = if b > a {
+        math::clamp((dy - a) / (b - a), T::ZERO, T::ONE)
+    } else {
+        T::ZERO
+    };
+    Ok(Shift { i, f })
+}
+
 /// Corner weights of the table cell at (dy, F).
 #[derive(Clone, Copy)]
 struct Cell<T> {
@@ -106,24 +143,18 @@ struct Cell<T> {
     w: [T; 4],
 }
 
-fn cell<T: Real>(t: &ContactTable<'_, T>, dy: T, f: T) -> Result<Cell<T>, Error> {
+fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>, Error> {
     let h = &t.header;
-    let (d0, d1) = (T::from_f64(h.dy_min), T::from_f64(h.dy_max));
-    if !(dy >= d0 && dy <= d1) {
-        return Err(Error::OutOfRange("lateral shift outside the contact table"));
-    }
     let (f0, f1) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
     if !(f >= f0 && f <= f1) {
         return Err(Error::OutOfRange("load outside the contact table"));
     }
-    let ui = (dy - d0) / (d1 - d0) * T::from_usize(h.n_dy - 1);
-    let i = math::clamp(math::floor(ui), T::ZERO, T::from_usize(h.n_dy - 2));
-    let fi = ui - i;
+    let fi = s.f;
     let uj = math::ln(f / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
     let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
     let fj = uj - j;
     Ok(Cell {
-        i: i.to_f64() as usize,
+        i: s.i,
         j: j.to_f64() as usize,
         w: [
             (T::ONE - fi) * (T::ONE - fj),
@@ -196,11 +227,13 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
     // sin ψ by its series (|ψ| ≤ 0.1 rad by the input check: error below 2e-11)
     let y2 = pose.yaw * pose.yaw;
     let sin_yaw = pose.yaw * (T::ONE - y2 * (c::<T>(1.0 / 6.0) - y2 * c::<T>(1.0 / 120.0)));
+    // 1. the shift interval (the same for every round and balance step)
+    let sh = shift(table, pose.dy)?;
     for _round in 0..ROUNDS {
         // 2. vertical balance
         let mut f = math::clamp(fz, f_lo, f_hi);
         for _ in 0..BALANCE_STEPS {
-            let c = cell(table, pose.dy, f)?;
+            let c = cell(table, &sh, f)?;
             let mut sum = T::ZERO;
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
@@ -220,7 +253,7 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
             }
         }
         // 3.–5. slots at F
-        let c = cell(table, pose.dy, f)?;
+        let c = cell(table, &sh, f)?;
         let f13 = math::cbrt(f);
         let f23 = f13 * f13;
         let cz = at(table, &c, 1);
