@@ -47,6 +47,63 @@ pub struct Patch {
     pub stick_area_fraction: f64,
     /// Largest wear depth per passage over the strips (µm).
     pub wear_depth_max_um: f64,
+    /// One entry per strip of the tangential grid with contact, in order of `y_mm`.
+    pub strips: Vec<StripOut>,
+    /// The cells of the strip through the reference point (y = 0), in order of x.
+    pub y0: Vec<Y0Cell>,
+}
+
+/// One strip of a patch's tangential grid (docs/cli.md, "JSON document").
+#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq)]
+pub struct StripOut {
+    /// Strip centre, lateral, in the patch's contact-local frame (mm).
+    pub y_mm: f64,
+    /// Half-length a_j of the strip's contact along x (mm).
+    pub half_length_mm: f64,
+    /// Normal load of the strip (N); the strips sum to the patch's `fn_n`.
+    pub fn_n: f64,
+    /// Longitudinal traction force of the strip on the wheel (N).
+    pub fx_n: f64,
+    /// Lateral traction force of the strip on the wheel (N).
+    pub fy_n: f64,
+    /// KTH wear depth of the strip per passage (µm).
+    pub wear_depth_um: f64,
+}
+
+/// One cell of the strip through the reference point (docs/cli.md, "JSON document").
+#[derive(Clone, Copy, Debug, Default, Serialize, PartialEq)]
+pub struct Y0Cell {
+    /// Cell centre along x, contact-local frame (mm).
+    pub x_mm: f64,
+    /// Normal pressure p_n (MPa).
+    pub pn_mpa: f64,
+    /// Traction p_x on the wheel (MPa).
+    pub px_mpa: f64,
+    /// Traction p_y on the wheel (MPa).
+    pub py_mpa: f64,
+    /// Magnitude of the slip velocity |s|·V (mm/s), 0 in adhesion.
+    pub slip_velocity_mm_s: f64,
+}
+
+/// Index of the strip through y = 0 among strips given as (centre, width): the first whose
+/// half-open range [y − δy/2, y + δy/2) contains 0, else the one whose centre is nearest to 0.
+/// `None` for no strips.
+pub fn y0_strip(strips: impl Iterator<Item = (f64, f64)>) -> Option<usize> {
+    let mut nearest: Option<(usize, f64)> = None;
+    for (j, (y, dy)) in strips.enumerate() {
+        if y - 0.5 * dy <= 0.0 && 0.0 < y + 0.5 * dy {
+            return Some(j);
+        }
+        if nearest.is_none_or(|(_, d)| y.abs() < d) {
+            nearest = Some((j, y.abs()));
+        }
+    }
+    nearest.map(|n| n.0)
+}
+
+/// Sorts y0 cells by x.
+pub fn sort_by_x(cells: &mut [Y0Cell]) {
+    cells.sort_by(|a, b| a.x_mm.total_cmp(&b.x_mm));
 }
 
 /// Sums over all patches.

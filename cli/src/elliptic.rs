@@ -132,7 +132,7 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
     let map = WearMap::<T>::kth();
 
     // The kernel call that is timed: Hertz + patch + tangential + wear.
-    let run = |keep: bool| -> Result<_, String> {
+    let run = |keep: bool, detail: bool| -> Result<_, String> {
         let h = hertz_of::<T>(args, &mat)?;
         let patch = hertz_patch::<T, S, C>(&h, &mat, cm.strips, cm.cells)?;
         let ell = Ellipse {
@@ -141,6 +141,9 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
             p0: h.p0,
         };
         let mut sink = StatsSink::<T, S>::new(map, speed, patch.dx, keep);
+        if detail {
+            sink = sink.detailed();
+        }
         let pressure = wrc_kernel::patch::SemiEllipticStrips;
         let res = match cm.tangential {
             Tangential::Fastsim => {
@@ -157,9 +160,10 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
         Ok((h, res, sink, patch))
     };
     let time_us = median_time_us(|| {
-        let _ = run(false);
+        let _ = run(false, false);
     });
-    let (h, res, sink, patch) = run(keep_cells)?;
+    let (h, res, sink, patch) = run(keep_cells, true)?;
+    let (strips, y0) = crate::sink::kernel_strips(&patch, cm.strips, &res, &sink);
     let wear_strips: Vec<(f64, f64)> = patch
         .strips
         .iter()
@@ -193,6 +197,8 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
             0.0
         },
         wear_depth_max_um: n.to_f64() * 1e3,
+        strips,
+        y0,
     };
     Ok(Solved {
         patch,
@@ -290,7 +296,8 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         phi: t(cm.phi.unwrap_or(0.0)),
     };
     let mu = t(cm.mu);
-    let mut sink = StatsSink::<T, S>::new(WearMap::kth(), t(cm.speed * 1e3), patch.dx, keep_cells);
+    let mut sink =
+        StatsSink::<T, S>::new(WearMap::kth(), t(cm.speed * 1e3), patch.dx, keep_cells).detailed();
     let pressure = CellPressure(&pn);
     let res = match cm.tangential {
         Tangential::Fastsim => fastsim(
@@ -313,6 +320,7 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         .filter(|(s, _)| s.a > T::ZERO)
         .map(|(s, d)| (s.y.to_f64(), d.to_f64() * 1e3))
         .collect();
+    let (strips, y0) = crate::sink::kernel_strips(&patch, g.my, &res, &sink);
     let (ex, ey) = (
         sol.extent_x.unwrap_or((0.0, 0.0)),
         sol.extent_y.unwrap_or((0.0, 0.0)),
@@ -341,6 +349,8 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
             0.0
         },
         wear_depth_max_um: sink.wear.max_depth(S).to_f64() * 1e3,
+        strips,
+        y0,
     };
     let mut warnings = vec![];
     if sol.touches_boundary {
@@ -387,7 +397,7 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
     if cm.precision == crate::args::Precision::F32 {
         warnings.push("--tangential exact runs in f64 (host reference)".to_string());
     }
-    let (grid, pn, normal, norm_status) = match cm.normal.unwrap_or(Normal::Hertz) {
+    let (grid, pn, normal, half, norm_status) = match cm.normal.unwrap_or(Normal::Hertz) {
         Normal::Hertz => {
             let g = exact::elliptic_grid(h.a, h.b, nx, ny);
             let pn = exact::hertz_on(&g, h.a, h.b, h.load);
@@ -398,7 +408,8 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
                 x_extent_mm: [-h.a, h.a],
                 y_extent_mm: [-h.b, h.b],
             };
-            (g, pn, nf, None)
+            let half = exact::hertz_half_lengths(&g, h.a, h.b);
+            (g, pn, nf, half, None)
         }
         Normal::Norm => {
             let control = if args.approach.is_some() {
@@ -435,7 +446,8 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
                 y_extent_mm: [ey.0, ey.1],
             };
             let (tg, pn) = wrc_host_tests::tang::from_norm(&sol);
-            (tg, pn, nf, Some(sol.converged))
+            let half = exact::norm_half_lengths(&sol);
+            (tg, pn, nf, half, Some(sol.converged))
         }
         Normal::Stripes => {
             return Err(
@@ -451,6 +463,7 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
         &mat,
         cm.speed * 1e3,
         normal,
+        &half,
         keep_cells,
     );
     let mut status = ep.status;

@@ -3,8 +3,8 @@
 //! chosen adaptation and tangential model, KTH wear.
 
 use crate::args::{Flex, Normal, Side as ArgSide, SolveArgs, Tangential};
-use crate::doc::{Creepage as DocCreepage, Patch, Status};
-use crate::sink::PlotCell;
+use crate::doc::{Creepage as DocCreepage, Patch, Status, StripOut, Y0Cell};
+use crate::sink::{PlotCell, StatsSink};
 use crate::timing::median_time_us;
 use std::path::Path;
 use wrc_host_tests::profiles::{
@@ -14,7 +14,9 @@ use wrc_host_tests::profiles::{
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
 use wrc_kernel::patch::{CellOut, CellSink, Creepage};
+use wrc_kernel::pipeline::solve_patch;
 use wrc_kernel::profile::{ProfileKind, ProfileTable};
+use wrc_kernel::stripes::StripSample;
 use wrc_kernel::wheel::{solve_wheel, WheelConfig, WheelSink, WheelWorkspace};
 use wrc_kernel::{Material, Real};
 
@@ -261,7 +263,7 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         Tangential::Exact => unreachable!("handled by solve_exact"),
     };
     cfg.pipeline.adapt = adaptation(cm.flex);
-    let mut ws = Box::new(WheelWorkspace::<T, 4, 128, 256, 4, 32, C, 128>::new());
+    let mut ws = Box::new(Ws::<T, C>::new());
     let fz = t(args.wr.fz);
     let time_us = median_time_us(|| {
         let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
@@ -277,8 +279,15 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         cell_dx: 0.0,
     };
     let res = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut stats).map_err(|e| e.to_string())?;
+    let mut warnings = vec![];
+    let per_patch = patch_strips(&res, &mat, &cfg, &mut ws, &mut warnings)?;
     let mut patches = vec![];
-    for (k, p) in res.patches[..res.n].iter().flatten().enumerate() {
+    for (k, (p, (strips, y0))) in res.patches[..res.n]
+        .iter()
+        .flatten()
+        .zip(per_patch)
+        .enumerate()
+    {
         let st = stats.per.get(k).cloned().unwrap_or_default();
         let r = &p.result;
         let mut wear = 0.0f64;
@@ -309,6 +318,8 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
                 0.0
             },
             wear_depth_max_um: wear * 1e3,
+            strips,
+            y0,
         });
     }
     // plots: first patch; strip wear from the pipeline workspace belongs to the last patch solved,
@@ -343,7 +354,6 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
             0.0
         };
     }
-    let mut warnings = vec![];
     if !res.converged {
         warnings.push("the load or frame iteration did not reach its tolerance".to_string());
     }
@@ -359,6 +369,108 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         cell_mm,
         wear_strips,
     })
+}
+
+/// The kernel's wheel workspace of the command line (`C` cells per strip).
+type Ws<T, const C: usize> = WheelWorkspace<T, 4, 128, 256, 4, 32, C, 128>;
+
+/// `strips` and `y0` of every patch of `res`: each patch is run once more through the kernel's
+/// pipeline (`wrc_kernel::pipeline::solve_patch`, the computation of the wheel solve's final
+/// solve of that patch, on its geometry samples, load and creepages that `ws` and `res` hold),
+/// into a detailed sink; then the workspace holds that patch's STRIPES strips (centre y_j,
+/// half-length a_j, strip load stiffness·h_j·δy_j) and its per-strip KTH wear, and the sink the
+/// per-strip totals of the cells (F_x, F_y) and the cells of the strip through y = 0. A re-run
+/// whose totals differ from the wheel solve's (not expected) and a patch in the neck blend (whose
+/// totals and wear are a blend of two strip layouts while the strips are the dominant layout's)
+/// are reported in `warnings`.
+fn patch_strips<T: Real, const C: usize>(
+    res: &wrc_kernel::wheel::WheelResult<T, 4, 4>,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    ws: &mut Ws<T, C>,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<(Vec<StripOut>, Vec<Y0Cell>)>, String> {
+    let mut out = vec![];
+    let mut next = 0usize;
+    for (m, p) in res.patches[..res.n].iter().flatten().enumerate() {
+        let np = ws.patches.len.min(4);
+        let Some(k) = (next..np).find(|&k| ws.patches.items[k].frame == p.frame) else {
+            warnings.push(format!("patch {m}: geometry patch not found; no strips"));
+            out.push((vec![], vec![]));
+            continue;
+        };
+        next = k + 1;
+        let g = &ws.patches.items[k].samples;
+        let samples: Vec<StripSample<T>> = (0..g.n.min(128))
+            .map(|i| StripSample {
+                y: g.s(i),
+                dy: g.width[i],
+                z: g.f_n[i],
+                curv_a: g.a_long[i],
+                curv_b: g.b_lat[i],
+                xc: g.x_c[i],
+            })
+            .collect();
+        let mut sink = StatsSink::<T, 128>::new(
+            wrc_kernel::wear::WearMap::kth(),
+            cfg.pipeline.speed,
+            T::ONE,
+            false,
+        )
+        .detailed();
+        let r = solve_patch(
+            &samples,
+            p.load,
+            &p.creepage,
+            mat,
+            &cfg.pipeline,
+            &mut ws.pipeline,
+            &mut sink,
+        )
+        .map_err(|e| format!("patch {m}: {e}"))?;
+        if r.totals != p.result.totals {
+            warnings.push(format!(
+                "patch {m}: the per-strip re-run differs from the wheel solve; strips approximate"
+            ));
+        }
+        let set = &ws.pipeline.set;
+        let mut rows: Vec<(StripOut, usize)> = (0..set.n_strips)
+            .filter(|&j| set.a[j] > T::ZERO)
+            .map(|j| {
+                let t = sink.rows.get(j).map(|r| r.totals).unwrap_or_default();
+                (
+                    StripOut {
+                        y_mm: set.y[j].to_f64(),
+                        half_length_mm: set.a[j].to_f64(),
+                        fn_n: (set.stiffness[j] * set.h[j] * set.dy[j]).to_f64(),
+                        fx_n: t.fx.to_f64(),
+                        fy_n: t.fy.to_f64(),
+                        wear_depth_um: ws.pipeline.wear.depth[j].to_f64() * 1e3,
+                    },
+                    j,
+                )
+            })
+            .collect();
+        rows.sort_by(|a, b| a.0.y_mm.total_cmp(&b.0.y_mm));
+        let (sx, sy) = rows
+            .iter()
+            .fold((0.0, 0.0), |a, r| (a.0 + r.0.fx_n, a.1 + r.0.fy_n));
+        let (tx, ty) = (p.result.totals.fx.to_f64(), p.result.totals.fy.to_f64());
+        let scale = tx.hypot(ty).max(1e-9 * p.load.to_f64());
+        if (sx - tx).hypot(sy - ty) > 1e-6 * scale {
+            warnings.push(format!(
+                "patch {m}: in the neck blend of two strip layouts; its strips are the dominant \
+                 layout's and do not sum to the blended totals"
+            ));
+        }
+        let mut y0 = crate::doc::y0_strip(rows.iter().map(|r| (r.0.y_mm, set.dy[r.1].to_f64())))
+            .and_then(|q| sink.rows.get(rows[q].1))
+            .map(|r| r.cells.clone())
+            .unwrap_or_default();
+        crate::doc::sort_by_x(&mut y0);
+        out.push((rows.into_iter().map(|r| r.0).collect(), y0));
+    }
+    Ok(out)
 }
 
 /// `--tangential exact` on a wheel/rail case: the kernel's per-wheel solve (f64, the chosen
@@ -412,7 +524,10 @@ fn solve_exact(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
             n.extent_y.unwrap_or((0.0, 0.0)),
         );
         let stick = run.cells.iter().filter(|c| !c.slip).count();
-        let wear_max = run.wear.iter().map(|w| w.1).fold(0.0, f64::max);
+        let (_, pn) = wrc_host_tests::tang::from_norm(n);
+        let (strips, y0) =
+            crate::exact::tang_strips(&sol, &pn, speed, &crate::exact::norm_half_lengths(n));
+        let wear_max = strips.iter().map(|s| s.wear_depth_um).fold(0.0, f64::max);
         patches.push(Patch {
             y_ref_mm: pc.frame.y_ref_rail,
             z_ref_mm: pc.frame.z_ref_rail,
@@ -436,7 +551,9 @@ fn solve_exact(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
             } else {
                 stick as f64 / run.cells.len() as f64
             },
-            wear_depth_max_um: wear_max * 1e3,
+            wear_depth_max_um: wear_max,
+            strips,
+            y0,
         });
         if k == 0 {
             cell_mm = (n.grid.dx, n.grid.dy);

@@ -17,7 +17,7 @@
 //! every patch, geometry and load split excluded).
 
 use crate::args::{Flex, SolveArgs, Tangential};
-use crate::doc::{Creepage as DocCreepage, Patch, Status};
+use crate::doc::{sort_by_x, y0_strip, Creepage as DocCreepage, Patch, Status, StripOut, Y0Cell};
 use crate::sink::StatsSink;
 use crate::timing::median_time_us;
 use crate::wheelrail::{adaptation, prepare, Solved};
@@ -76,7 +76,7 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
     let (kps, kernel_ok, mat) = kernel_patches(args)?;
     let speed = cm.speed * 1e3;
     let opts = NormGridOptions::default();
-    let run = |keep: bool| -> Result<_, String> {
+    let run = |keep: bool, detail: bool| -> Result<_, String> {
         let mut out = vec![];
         for (k, kp) in kps.iter().enumerate() {
             let (grid, sol) = norm_on_gap(&kp.gap, kp.load, kp.frame.approach, &mat, &opts)
@@ -90,12 +90,17 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
                 m,
                 cm.mu,
                 |_| {
-                    StatsSink::<T, NORM_STRIPS>::new(
+                    let s = StatsSink::<T, NORM_STRIPS>::new(
                         WearMap::kth(),
                         T::from_f64(speed),
                         T::from_f64(grid.dx),
                         keep && k == 0,
-                    )
+                    );
+                    if detail {
+                        s.detailed()
+                    } else {
+                        s
+                    }
                 },
             )
             .map_err(|e| format!("tangential on NORM pressure, patch {k}: {e}"))?;
@@ -104,9 +109,9 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
         Ok(out)
     };
     let time_us = median_time_us(|| {
-        let _ = run(false);
+        let _ = run(false, false);
     });
-    let solved = run(keep)?;
+    let solved = run(keep, true)?;
     let mut patches = vec![];
     let mut cells = vec![];
     // the per-strip wear of NORM's rows is per region in the sinks; the plots show the cells' wear
@@ -131,6 +136,7 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
             sol.extent_x.unwrap_or((0.0, 0.0)),
             sol.extent_y.unwrap_or((0.0, 0.0)),
         );
+        let (strips, y0) = norm_strips(&sol, &sinks);
         if k == 0 {
             cell_mm = (grid.dx, grid.dy);
             for s in sinks {
@@ -149,6 +155,8 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
             y_extent_mm: [ey.0, ey.1],
             stick_area_fraction: if area > 0.0 { stick / area } else { 0.0 },
             wear_depth_max_um: wear * 1e3,
+            strips,
+            y0,
             ..doc_patch(kp)
         });
     }
@@ -167,6 +175,55 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
         cell_mm,
         wear_strips,
     })
+}
+
+/// `strips` and `y0` of the kernel's tangential solve on NORM's pressure: one strip per NORM
+/// row and contact run (the kernel strips of `tangential_on_norm`, one detailed sink per row
+/// region); half-length of the run, normal load and forces from the kernel's totals of the
+/// strip's cells, wear from the sink's per-strip KTH wear. `y0`: the cells of the grid row
+/// through y = 0 (all its runs).
+fn norm_strips<T: Real>(
+    sol: &wrc_host_tests::norm::NormSolution,
+    sinks: &[StatsSink<T, NORM_STRIPS>],
+) -> (Vec<StripOut>, Vec<Y0Cell>) {
+    let g = &sol.grid;
+    let mut rows: Vec<(StripOut, &[Y0Cell])> = vec![];
+    for s in sinks {
+        for (j, r) in s.rows.iter().enumerate().filter(|(_, r)| r.seen) {
+            let row = ((r.y - g.y0) / g.dy - 0.5).round().max(0.0) as usize;
+            let half = sol
+                .strips
+                .get(row)
+                .and_then(|st| {
+                    st.runs
+                        .iter()
+                        .find(|run| run.i_first <= r.i_first && r.i_first <= run.i_last)
+                })
+                .map(|run| 0.5 * (run.x_lead - run.x_trail))
+                .unwrap_or(0.0);
+            rows.push((
+                StripOut {
+                    y_mm: r.y,
+                    half_length_mm: half,
+                    fn_n: r.totals.fn_.to_f64(),
+                    fx_n: r.totals.fx.to_f64(),
+                    fy_n: r.totals.fy.to_f64(),
+                    wear_depth_um: s.wear.depth[j].to_f64() * 1e3,
+                },
+                &r.cells,
+            ));
+        }
+    }
+    rows.sort_by(|a, b| a.0.y_mm.total_cmp(&b.0.y_mm));
+    let mut y0 = vec![];
+    if let Some(k) = y0_strip(rows.iter().map(|r| (r.0.y_mm, g.dy))) {
+        let yk = rows[k].0.y_mm;
+        for r in rows.iter().filter(|r| r.0.y_mm == yk) {
+            y0.extend_from_slice(r.1);
+        }
+    }
+    sort_by_x(&mut y0);
+    (rows.into_iter().map(|r| r.0).collect(), y0)
 }
 
 /// `--normal hertz` on a wheel/rail case (module docs).
@@ -213,7 +270,7 @@ pub fn solve_hertz<T: Real, const C: usize>(
             .map_err(|e| format!("patch {k}: {e}"))?;
         ellipses.push(h);
     }
-    let run = |keep: bool| -> Result<_, String> {
+    let run = |keep: bool, detail: bool| -> Result<_, String> {
         let mut out = vec![];
         for (k, h) in ellipses.iter().enumerate() {
             let kp = &kps[k];
@@ -224,6 +281,9 @@ pub fn solve_hertz<T: Real, const C: usize>(
                 phi: t(kp.creepage.phi),
             };
             let mut sink = StatsSink::<T, S>::new(WearMap::kth(), speed, patch.dx, keep && k == 0);
+            if detail {
+                sink = sink.detailed();
+            }
             let res = match m {
                 Method::Fastsim => fastsim(
                     &patch,
@@ -253,9 +313,9 @@ pub fn solve_hertz<T: Real, const C: usize>(
         Ok(out)
     };
     let time_us = median_time_us(|| {
-        let _ = run(false);
+        let _ = run(false, false);
     });
-    let solved = run(keep)?;
+    let solved = run(keep, true)?;
     let mut patches = vec![];
     let mut cells = vec![];
     let mut wear_strips = vec![];
@@ -272,6 +332,7 @@ pub fn solve_hertz<T: Real, const C: usize>(
                 .map(|(s, d)| (s.y.to_f64(), d.to_f64() * 1e3))
                 .collect();
         }
+        let (strips, y0) = crate::sink::kernel_strips(&patch, cm.strips, &res, &sink);
         patches.push(Patch {
             approach_mm: h.delta.to_f64(),
             fn_n: h.load.to_f64(),
@@ -288,6 +349,8 @@ pub fn solve_hertz<T: Real, const C: usize>(
                 0.0
             },
             wear_depth_max_um: sink.wear.max_depth(S).to_f64() * 1e3,
+            strips,
+            y0,
             ..doc_patch(kp)
         });
         cells.extend(sink.cells);
