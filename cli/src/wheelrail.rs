@@ -374,6 +374,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
 /// The kernel's wheel workspace of the command line (`C` cells per strip).
 type Ws<T, const C: usize> = WheelWorkspace<T, 4, 128, 256, 4, 32, C, 128>;
 
+/// One patch's strips and the cells of its strip through y = 0.
+type PatchStrips = (Vec<StripOut>, Vec<Y0Cell>);
+
 /// `strips` and `y0` of every patch of `res`: each patch is run once more through the kernel's
 /// pipeline (`wrc_kernel::pipeline::solve_patch`, the computation of the wheel solve's final
 /// solve of that patch, on its geometry samples, load and creepages that `ws` and `res` hold),
@@ -389,7 +392,7 @@ fn patch_strips<T: Real, const C: usize>(
     cfg: &WheelConfig<T>,
     ws: &mut Ws<T, C>,
     warnings: &mut Vec<String>,
-) -> Result<Vec<(Vec<StripOut>, Vec<Y0Cell>)>, String> {
+) -> Result<Vec<PatchStrips>, String> {
     let mut out = vec![];
     let mut next = 0usize;
     for (m, p) in res.patches[..res.n].iter().flatten().enumerate() {
