@@ -767,24 +767,6 @@ impl<T: Real> DirectionField<T> {
         let cross = self.wx * uy - wy * ux;
         (cos * self.dl * ux * uy - self.a_mp * cross * sin) / (sin * d)
     }
-    /// FASTSIM's free (adhering) march from traction `p` at x̄₀ down to x̄₁ < x̄₀, exact:
-    /// p(x̄₁) = p − ∫ q dx̄ over [x̄₁, x̄₀], q(x̄) = (A_x, B₀ + (φ/L3) x̄).
-    #[inline]
-    fn free(&self, p: (T, T), x0: T, x1: T) -> (T, T) {
-        let d = x0 - x1;
-        (
-            p.0 - self.ax * d,
-            p.1 - self.b0 * d - self.ph * (x0 * x0 - x1 * x1) * T::HALF,
-        )
-    }
-    /// Whether FASTSIM, slipping in direction u at θ (cos/sin `cs`, sin > 0), re-adheres there:
-    /// its free increment shrinks |p| no faster than the bound, a sin θ (u·q) ≥ μ p̂ cos θ.
-    #[inline]
-    fn readheres(&self, cs: (T, T), u: (T, T)) -> bool {
-        let xb = -self.a * cs.0;
-        let dot = u.0 * self.ax + u.1 * (self.b0 + self.ph * xb);
-        self.a * cs.1 * dot >= self.mp * cs.0
-    }
     /// [`Self::rate`] and the derivative with respect to α of its relaxation term
     /// −a (w × u)/(μ p̂ D) alone, −a (w · u)/(μ p̂ D) (the stiff part, for the linearly implicit
     /// step; the anisotropy term stays explicit).
@@ -798,17 +780,6 @@ impl<T: Real> DirectionField<T> {
         let r = (cos * self.dl * ux * uy - self.a_mp * cross * sin) / (sin * d);
         (r, -self.a_mp * dot / d)
     }
-}
-
-/// FASTSIM's state along a strip's slip zone in [`slip_zone`].
-#[derive(Clone, Copy)]
-enum ZoneState<T> {
-    /// Adhering from the leading edge (above FASTSIM's slip onset): p = p^F.
-    Adhering,
-    /// Slipping, |p| = μ p_n, direction u at the last midpoint.
-    Slipping((T, T)),
-    /// Re-adhered inside the slip zone: traction p at x̄ (mm), marching freely.
-    Readhered((T, T), T),
 }
 
 /// u turned by the angle β, |β| clamped to π/2 (series to β⁹, error below 3e-5 at π/2, then
@@ -931,9 +902,8 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
     }
     // θ ≥ θ_F ⇔ cos θ ≤ cos θ_F (θ ∈ [0, π])
     let upstream = onset.0 < top.0;
-    // FASTSIM's state: adhering from the leading edge (before its onset), slipping with the
-    // direction u at the last midpoint, or re-adhered inside the slip zone with traction p at x̄
-    let mut state = ZoneState::Adhering;
+    // the direction at θ_top, if FASTSIM already slips there
+    let mut u: Option<(T, T)> = None;
     if upstream {
         // Δ = θ_F − θ_top in UPSTREAM_STEPS = 4 steps: (cos, sin) of Δ/8 and Δ/4
         let e = halve(halve(halve(difference(onset, top))));
@@ -948,7 +918,7 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
             }
             cs = next;
         }
-        state = ZoneState::Slipping(v);
+        u = Some(v);
     }
     // SLIP_STEPS = 8 intervals of h = θ_top/8: (cos, sin) of h/4 by five halvings, h/2 doubled
     let hq = halve(halve(halve(halve(halve(top)))));
@@ -958,53 +928,30 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
     for k in 0..SLIP_STEPS {
         let m = step_down(hi, hh);
         let lo = step_down(m, hh);
-        let xm = -f.a * m.0;
-        let (dir, next) = match state {
+        let dir = match u {
             // carry the direction to this midpoint: from θ_top (h/2, through θ_top − h/4) or
             // from the previous midpoint (h, through the node `hi`)
-            ZoneState::Slipping(v) if k == 0 => {
+            Some(v) if k == 0 => {
                 let v = ros2(f, v, h * T::HALF, top, step_down(top, hq), m);
-                (v, ZoneState::Slipping(v))
+                u = Some(v);
+                v
             }
-            ZoneState::Slipping(v) => {
+            Some(v) => {
                 let v = ros2(f, v, h, step_down(hi, (hh.0, -hh.1)), hi, m);
-                (v, ZoneState::Slipping(v))
+                u = Some(v);
+                v
             }
-            ZoneState::Adhering if m.0 <= onset.0 => (f.adhesion_dir(m.0), ZoneState::Adhering),
-            ZoneState::Adhering => {
+            None if m.0 <= onset.0 => f.adhesion_dir(m.0),
+            None => {
                 // FASTSIM's onset lies within h above this midpoint: start there, one step of
                 // θ_F − θ_m ≤ h with the rate at the midpoint (at an onset on the leading edge,
                 // sin θ_F → 0, the rate's anisotropy term is singular)
                 let v0 = f.adhesion_dir(onset.0);
                 let dist = asin_small(math::clamp(difference(onset, m).1, T::ZERO, c::<T>(0.4)));
                 let v = turn(v0, -dist * f.rate(m.0, m.1, v0));
-                (v, ZoneState::Slipping(v))
+                u = Some(v);
+                v
             }
-            ZoneState::Readhered(p, x0) => {
-                // free march from x̄₀ to x̄_m (exact: dp/dx̄ = q(x̄)); back on the bound where
-                // |p| reaches μ p_n
-                let pm = f.free(p, x0, xm);
-                let mag = math::hypot_fast(pm.0, pm.1);
-                let d = if mag > T::ZERO {
-                    (pm.0 / mag, pm.1 / mag)
-                } else {
-                    (T::ZERO, T::ZERO)
-                };
-                if mag >= f.mp * m.1 && mag > T::ZERO {
-                    (d, ZoneState::Slipping(d))
-                } else {
-                    (d, ZoneState::Readhered(pm, xm))
-                }
-            }
-        };
-        // a slipping march re-adheres where its free increment shrinks |p| more slowly than
-        // the bound μ p_n shrinks: u·q ≥ μ dp_n/dx̄ = μ p̂ cot θ / a
-        state = match next {
-            ZoneState::Slipping(u) if f.readheres(m, u) => {
-                let b = f.mp * m.1;
-                ZoneState::Readhered((b * u.0, b * u.1), xm)
-            }
-            other => other,
         };
         // exact weights of the interval: ∫ sin²θ dθ, ∫ −a cos θ sin²θ dθ
         let w0 = h * T::HALF - (hi.1 * hi.0 - lo.1 * lo.0) * T::HALF;
@@ -1044,11 +991,7 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 ///   integrated on [`SLIP_STEPS`] uniform intervals in θ whose weights ∫sin²θ dθ and
 ///   ∫−a cos θ sin²θ dθ are exact, by the midpoint rule where the relaxation towards the rigid
 ///   slip is mild and by ROS2 (L-stable) where it is stiff, blended in between (rotations by
-///   series: no trigonometric call). Where the slipping march's free increment would shrink |p|
-///   no faster than the bound shrinks (u·q ≥ μ dp_n/dx̄, q(x̄) = (A_x, B₀ + (φ/L3) x̄): under
-///   spin, where the rigid slip turns along the strip) FASTSIM re-adheres: its traction then
-///   marches freely (exact: p(x̄₁) = p(x̄₀) − ∫q) until |p| reaches μ p_n again, and the slip
-///   zone's μ p_n takes that traction's direction, as the cell FASTSIM's trial test does;
+///   series: no trigonometric call);
 /// * a strip whose adhesion traction exceeds its semi-ellipse bound (`BoundCheck::Strip`, exact
 ///   here: |(κd q, λ'd q + φ*)| ≤ 1 for q = (S₁ − S₂)/(d S₁), convex in q, checked at the
 ///   leading edge q = (1 − √(1 − t))/d) carries FASTSIM's tractions, as in [`fastrip`]: p^F in
@@ -1056,11 +999,9 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 ///
 /// Every count is fixed (no data-dependent iteration). Against [`fastrip`] on a 6 × 4 mm Hertz
 /// patch with 400 cells per strip (host-tests `realtime_step`): within 0.14 % of μN up to
-/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.35 % at pure spin φ = 1e-3 1/mm (0.66 %
-/// before the re-adhesion above; the cell FaStrip is grid-converged there). In flange contact
-/// (S1002/UIC60, φ ≈ 2.5e-4 1/mm with ξ ≈ −2.4e-3, nearly full slip) the [`SLIP_STEPS`] = 8
-/// intervals put the resultant's direction about 1° off the cell FaStrip's (up to 2.3 % of μN);
-/// 16 intervals bring that below 0.3 % but double the slip zone's cost. Before this direction pass the slip zone took the
+/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.66 % at pure spin φ = 1e-3 1/mm (the cell
+/// FaStrip is grid-converged there: FASTSIM re-adheres inside its slip zone under spin, which
+/// this direction field does not follow). Before this direction pass the slip zone took the
 /// strip theory's slip direction blended into the rigid slip's, 7.9 % of μN off at φ = 1e-3
 /// and 4.3 % of μF_z in flange contact.
 ///
