@@ -158,7 +158,8 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
 /// Issue 14's accuracy against the converged solver, 1000 states with yaw within ±3 mrad:
 /// |ΔN|/F_z ≤ 0.5 %, area ≤ 3 % and pmax ≤ 3 % on every state (measured max 0.07 %, 1.8 %,
 /// 2.7 %); force at P95 (1 % of μF_z; measured 0.80 %). The force maximum misses the target:
-/// 2.3 % (flange at low load, dy −7.78 mm, 25 kN), asserted at 3 % so that a slot mismatch (a
+/// 2.3 % (flange at low load, dy −7.78 mm, 25 kN: the closed form's 8 slip intervals against the
+/// cell FaStrip, docs/realtime.md), asserted at 3 % so that a slot mismatch (a
 /// patch changing slot between nodes: 5.1 % and pmax 50 % before the slots were continued by
 /// prediction) cannot return. pmax was 8.6 % at dy −3.37 mm on the evenly spaced 0.25 mm grid
 /// (pmax/F^{1/3} not linear between nodes); the refined grid (71 nodes) brought it to 2.7 %,
