@@ -1094,6 +1094,7 @@ fn check_strips(p: &serde_json::Value, what: &str) -> Vec<[f64; 4]> {
         assert!(y >= last_y, "{what}: strips not ordered by y");
         last_y = y;
         assert!(f(s, "half_length_mm") > 0.0, "{what}: {s}");
+        assert!(f(s, "width_mm") > 0.0, "{what}: {s}");
         sn += f(s, "fn_n");
         sx += f(s, "fx_n");
         sy += f(s, "fy_n");
