@@ -209,9 +209,14 @@ pub struct SolveArgs {
     /// Print one JSON document instead of the table.
     #[arg(long)]
     pub json: bool,
-    /// Write SVG plots (pressure, traction with stick/slip, slip velocity, wear) into this directory.
+    /// Write SVG plots (pressure, traction with stick/slip, slip velocity, wear, the strip through
+    /// y = 0, the strips) into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Also run the exact reference of the case (`--tangential exact --normal norm`; seconds on a
+    /// wheel/rail case) and draw it beside the model in y0.svg and strips.svg (needs --plot).
+    #[arg(long = "plot-reference")]
+    pub plot_reference: bool,
     /// Run the fixed-cost real-time step on this contact table (built by `wrc table`) instead of
     /// the converged solver; the options the table fixes must agree with it or be omitted.
     #[arg(long, conflicts_with_all = ["ellipse", "curvatures"])]
@@ -219,6 +224,25 @@ pub struct SolveArgs {
     /// The long names of the options given on the command line (filled in by `main`).
     #[arg(skip)]
     pub given: Vec<String>,
+}
+
+impl SolveArgs {
+    /// Whether this is an elliptic case (`--ellipse` or `--curvatures`).
+    pub fn elliptic(&self) -> bool {
+        self.ellipse.is_some() || self.curvatures.is_some()
+    }
+
+    /// The normal model used: `--normal`, else hertz for elliptic cases, norm for a wheel/rail
+    /// case with `--tangential exact`, stripes for the other wheel/rail cases.
+    pub fn normal(&self) -> Normal {
+        self.common.normal.unwrap_or(if self.elliptic() {
+            Normal::Hertz
+        } else if self.common.tangential == Tangential::Exact {
+            Normal::Norm
+        } else {
+            Normal::Stripes
+        })
+    }
 }
 
 /// `wrc sweep`.

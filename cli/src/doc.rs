@@ -60,6 +60,9 @@ pub struct StripOut {
     pub y_mm: f64,
     /// Half-length a_j of the strip's contact along x (mm).
     pub half_length_mm: f64,
+    /// Width δy_j of the strip (mm): forces per unit width are `fx_n / width_mm`, comparable
+    /// between strip layouts.
+    pub width_mm: f64,
     /// Normal load of the strip (N); the strips sum to the patch's `fn_n`.
     pub fn_n: f64,
     /// Longitudinal traction force of the strip on the wheel (N).

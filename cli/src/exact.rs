@@ -105,6 +105,7 @@ pub fn tang_strips(
             StripOut {
                 y_mm: g.y(j),
                 half_length_mm: half_lengths.get(j).copied().unwrap_or(0.0),
+                width_mm: g.dy,
                 fn_n: f_n * area,
                 fx_n: fx * area,
                 fy_n: fy * area,

@@ -7,6 +7,7 @@ mod exact;
 mod orientation;
 mod plot;
 mod realtime;
+mod reference;
 mod sink;
 mod sweep;
 mod timing;
@@ -52,13 +53,7 @@ fn inputs_json(a: &SolveArgs) -> serde_json::Value {
         "back_to_back_mm": a.wr.back_to_back.unwrap_or(1360.0), "cant_rad": a.wr.cant, "r0_mm": a.wr.r0,
         "xi": c.xi, "eta": c.eta, "phi_per_mm": c.phi,
         "mu": c.mu, "e_mpa": c.e_mpa, "nu": c.nu, "speed_m_per_s": c.speed,
-        "normal": c.normal.unwrap_or(if elliptic {
-            args::Normal::Hertz
-        } else if c.tangential == args::Tangential::Exact {
-            args::Normal::Norm
-        } else {
-            args::Normal::Stripes
-        }),
+        "normal": a.normal(),
         "flex": c.flex.unwrap_or(if elliptic { args::Flex::Hertz } else { args::Flex::Ac }),
         "model": sweep::model_name(c.tangential, c.flex.unwrap_or(if elliptic { args::Flex::Hertz } else { args::Flex::Ac })),
         "tangential": c.tangential, "strips": c.strips, "cells": c.cells, "precision": c.precision,
@@ -131,6 +126,71 @@ fn plausibility(doc: &mut Document) {
     }
 }
 
+/// The model in the legends of y0.svg and strips.svg: tangential model and flexibility (as in
+/// `inputs.model`; the tangential model alone for the exact one) on the normal model.
+fn model_label(a: &SolveArgs) -> String {
+    let v = inputs_json(a);
+    let model = if a.common.tangential == args::Tangential::Exact {
+        "exact"
+    } else {
+        v["model"].as_str().unwrap_or("model")
+    };
+    format!("{model} on {}", v["normal"].as_str().unwrap_or(""))
+}
+
+/// y0.svg and strips.svg of the solved `patches` into `dir`; with `--plot-reference` the exact
+/// reference is run ([`reference::run`]), its patches paired with the model's
+/// ([`reference::pair`]) and drawn beside them; its warnings and those of the pairing go to
+/// `status` (prefixed `--plot-reference`).
+fn plot_profiles(
+    a: &SolveArgs,
+    dir: &std::path::Path,
+    patches: &[doc::Patch],
+    status: &mut doc::Status,
+) -> Result<(), String> {
+    let reference = if a.plot_reference {
+        let (r, st) = reference::run(a, patches)?;
+        status.warnings.extend(
+            st.warnings
+                .iter()
+                .map(|w| format!("--plot-reference: the reference: {w}")),
+        );
+        Some(r)
+    } else {
+        None
+    };
+    let pairs = match &reference {
+        Some(r) => {
+            let (p, w) = reference::pair(patches, r);
+            status.warnings.extend(w);
+            p
+        }
+        None => vec![None; patches.len()],
+    };
+    let compared: Vec<plot::Compared> = patches
+        .iter()
+        .zip(&pairs)
+        .enumerate()
+        .map(|(k, (p, j))| plot::Compared {
+            heading: if a.elliptic() {
+                format!("patch {k}")
+            } else {
+                format!("patch {k} (y_ref {:.2} mm)", p.y_ref_mm)
+            },
+            model: p,
+            reference: j.and_then(|j| reference.as_ref().and_then(|r| r.get(j))),
+        })
+        .collect();
+    plot::write_profiles(
+        dir,
+        &case_title(a),
+        a.common.mu,
+        &compared,
+        &model_label(a),
+        reference::LABEL,
+    )
+}
+
 fn solve(a: &SolveArgs) -> Result<(), String> {
     let c = &a.common;
     validate::check_solve(a)?;
@@ -139,11 +199,13 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
     }
     let n = c.strips.max(c.cells);
     let keep = a.plot.is_some();
-    if a.ellipse.is_some() || a.curvatures.is_some() {
+    if a.elliptic() {
         let s = match c.precision {
             Precision::F64 => dispatch!(elliptic::solve, f64, n, a, keep),
             Precision::F32 => dispatch!(elliptic::solve, f32, n, a, keep),
         }?;
+        let patches = vec![s.patch];
+        let mut status = s.status;
         if let Some(dir) = &a.plot {
             plot::write_all(
                 dir,
@@ -153,10 +215,11 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
                 s.cell_mm.1,
                 &s.wear_strips,
             )?;
+            plot_profiles(a, dir, &patches, &mut status)?;
         }
         emit(
             a,
-            &Document::new(inputs_json(a), vec![s.patch], s.status, s.time_us),
+            &Document::new(inputs_json(a), patches, status, s.time_us),
         )
     } else {
         let s = match (c.precision, c.cells) {
@@ -167,6 +230,7 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
             (Precision::F32, 32) => wheelrail::solve::<f32, 32>(a, keep),
             (Precision::F32, _) => wheelrail::solve::<f32, 64>(a, keep),
         }?;
+        let mut status = s.status;
         if let Some(dir) = &a.plot {
             plot::write_all(
                 dir,
@@ -176,10 +240,11 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
                 s.cell_mm.1,
                 &s.wear_strips,
             )?;
+            plot_profiles(a, dir, &s.patches, &mut status)?;
         }
         emit(
             a,
-            &Document::new(inputs_json(a), s.patches, s.status, s.time_us),
+            &Document::new(inputs_json(a), s.patches, status, s.time_us),
         )
     }
 }

@@ -1,9 +1,12 @@
-//! SVG plots of a solved patch: pressure, traction with stick/slip, slip velocity, wear per strip.
+//! SVG plots of a solved patch: pressure, traction with stick/slip, slip velocity, wear per strip,
+//! the strip through y = 0 and the strips (beside the exact reference with `--plot-reference`).
 //!
 //! Text needs a TrueType font: DejaVu Sans from Debian's `fonts-dejavu-core`
 //! (/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf) or the file named by `$WRC_FONT`.
 
+use crate::doc::Patch;
 use crate::sink::PlotCell;
+use plotters::element::DashedPathElement;
 use plotters::prelude::*;
 use plotters::style::colors::colormaps::ViridisRGB;
 use std::path::Path;
@@ -282,36 +285,294 @@ pub fn write_all(
     let file = dir.join("wear.svg");
     let root = SVGBackend::new(&file, (860, 440)).into_drawing_area();
     root.fill(&WHITE).map_err(err)?;
-    let (mut y0, mut y1, mut w1) = (f64::MAX, f64::MIN, 0.0f64);
-    for &(y, w) in wear_per_strip {
-        y0 = y0.min(y);
-        y1 = y1.max(y);
-        w1 = w1.max(w);
-    }
+    let (y0, y1) = value_range(wear_per_strip.iter().map(|w| w.0));
     if wear_per_strip.is_empty() || y1 <= y0 {
         return Ok(());
     }
-    let mut ch = ChartBuilder::on(&root)
-        .caption(
-            t("Wear depth per strip and passage (KTH/Archard)"),
-            ("sans-serif", 18),
-        )
+    line_chart(
+        &root,
+        &t("Wear depth per strip and passage (KTH/Archard)"),
+        18,
+        ("y, mm", "wear depth, µm"),
+        &[Series {
+            label: String::new(),
+            points: wear_per_strip.to_vec(),
+            colour: BLUE,
+            dashed: false,
+            dots: false,
+        }],
+    )?;
+    root.present().map_err(err)?;
+    Ok(())
+}
+
+/// One line of a [`line_chart`].
+pub struct Series {
+    /// Legend label (empty: not in the legend).
+    pub label: String,
+    /// Points (x, y), in the order they are joined.
+    pub points: Vec<(f64, f64)>,
+    /// Colour.
+    pub colour: RGBColor,
+    /// Dashed (a reference) or solid (the model).
+    pub dashed: bool,
+    /// Marks every point with a dot (the model's strips and cells).
+    pub dots: bool,
+}
+
+/// Top of an axis of magnitudes: 8 % above the largest finite value, 1 when none is above 0.
+fn top(values: impl Iterator<Item = f64>) -> f64 {
+    let m = values.filter(|v| v.is_finite()).fold(0.0, f64::max);
+    if m > 0.0 {
+        1.08 * m
+    } else {
+        1.0
+    }
+}
+
+/// A line chart of `series` on `area`: caption (`caption_px` high), axis descriptions
+/// `desc` = (x, y), x over the points' range, y from 0 (the quantities drawn are magnitudes) to a
+/// little above the largest value, and a legend in the upper right when any series has a label
+/// (above the data: the y range grows with the legend's entries).
+fn line_chart(
+    area: &DrawingArea<SVGBackend<'_>, plotters::coord::Shift>,
+    caption: &str,
+    caption_px: u32,
+    desc: (&str, &str),
+    series: &[Series],
+) -> Result<(), String> {
+    let (x0, x1) = value_range(series.iter().flat_map(|s| s.points.iter().map(|p| p.0)));
+    let pad = 0.02 * (x1 - x0);
+    // headroom for the legend in the upper right: about a ninth of the height per entry
+    let entries = series.iter().filter(|s| !s.label.is_empty()).count();
+    let y1 = top(series.iter().flat_map(|s| s.points.iter().map(|p| p.1)))
+        * (1.0 + 0.12 * entries as f64);
+    let mut ch = ChartBuilder::on(area)
+        .caption(caption, ("sans-serif", caption_px))
         .margin(12)
         .x_label_area_size(40)
         .y_label_area_size(70)
-        .build_cartesian_2d(y0..y1, 0.0..(w1 * 1.1).max(1e-12))
+        .build_cartesian_2d((x0 - pad)..(x1 + pad), 0.0..y1)
         .map_err(err)?;
     ch.configure_mesh()
-        .x_desc("y, mm")
-        .y_desc("wear depth, µm")
+        .x_desc(desc.0)
+        .y_desc(desc.1)
         .draw()
         .map_err(err)?;
-    ch.draw_series(LineSeries::new(
-        wear_per_strip.iter().copied(),
-        BLUE.stroke_width(2),
-    ))
-    .map_err(err)?;
-    root.present().map_err(err)?;
+    for s in series {
+        let (col, pts) = (s.colour, s.points.clone());
+        let drawn = if s.dashed {
+            ch.draw_series(DashedLineSeries::new(pts, 7, 4, col.stroke_width(2)))
+                .map_err(err)?
+        } else {
+            ch.draw_series(LineSeries::new(pts, col.stroke_width(2)))
+                .map_err(err)?
+        };
+        if !s.label.is_empty() {
+            let dashed = s.dashed;
+            drawn.label(s.label.as_str()).legend(move |(x, y)| {
+                if dashed {
+                    DashedPathElement::new(vec![(x, y), (x + 22, y)], 7, 4, col.stroke_width(2))
+                        .into_dyn()
+                } else {
+                    PathElement::new(vec![(x, y), (x + 22, y)], col.stroke_width(2)).into_dyn()
+                }
+            });
+        }
+        if s.dots {
+            ch.draw_series(s.points.iter().map(|&p| Circle::new(p, 2, col.filled())))
+                .map_err(err)?;
+        }
+    }
+    if series.iter().any(|s| !s.label.is_empty()) {
+        ch.configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 13))
+            .position(SeriesLabelPosition::UpperRight)
+            .draw()
+            .map_err(err)?;
+    }
+    Ok(())
+}
+
+/// One patch of y0.svg and strips.svg: the model's and, when paired, the reference's.
+pub struct Compared<'p> {
+    /// Panel heading (patch number and reference point).
+    pub heading: String,
+    /// The model's patch.
+    pub model: &'p Patch,
+    /// The reference's patch paired with it (`--plot-reference`).
+    pub reference: Option<&'p Patch>,
+}
+
+/// Colour of the model's |p_t| and of its per-strip curves.
+const MODEL_COLOUR: RGBColor = RGBColor(0x1f, 0x77, 0xb4);
+/// Colour of the model's traction bound μ·p_n.
+const BOUND_COLOUR: RGBColor = RGBColor(0xff, 0x7f, 0x0e);
+/// Colour of the model's slip velocity.
+const SLIP_VELOCITY_COLOUR: RGBColor = RGBColor(0xd6, 0x27, 0x28);
+/// Colour of the reference's traction bound (its |p_t| and other curves are black).
+const REFERENCE_BOUND_COLOUR: RGBColor = RGBColor(0x70, 0x70, 0x70);
+
+/// A root of `cols` columns × 2 rows of panels under `title`, 520 px per column (860 at least).
+fn panels<'a>(
+    file: &'a Path,
+    title: &str,
+    cols: usize,
+) -> Result<Vec<DrawingArea<SVGBackend<'a>, plotters::coord::Shift>>, String> {
+    let w = (520 * cols as u32).max(860);
+    let root = SVGBackend::new(file, (w, 780)).into_drawing_area();
+    root.fill(&WHITE).map_err(err)?;
+    let root = root.titled(title, ("sans-serif", 18)).map_err(err)?;
+    Ok(root.split_evenly((2, cols.max(1))))
+}
+
+/// Writes y0.svg and strips.svg into `dir` for `patches` (one column of panels each):
+///
+/// * y0.svg: along the strip through y = 0 (the JSON's `y0`), |p_t| and the traction bound μ·p_n
+///   (MPa, `mu` the friction coefficient) against x (mm) above, the slip velocity (mm/s) below;
+/// * strips.svg: per strip against its centre y (mm), the KTH wear depth per passage (µm) above
+///   and the tangential force per unit strip width |F_t|/δy (N/mm; per unit width, as the
+///   reference's grid rows are narrower than the kernel's strips) below.
+///
+/// The model's curves are coloured and solid (legend `model`), the paired reference's black or
+/// grey and dashed (legend `reference`), each at its own cells and strip centres. Every title
+/// ends with `case`.
+pub fn write_profiles(
+    dir: &Path,
+    case: &str,
+    mu: f64,
+    patches: &[Compared<'_>],
+    model: &str,
+    reference: &str,
+) -> Result<(), String> {
+    register_font()?;
+    std::fs::create_dir_all(dir).map_err(|e| format!("{}: {e}", dir.display()))?;
+    let solid = |label: String, points: Vec<(f64, f64)>, colour: RGBColor| Series {
+        label,
+        points,
+        colour,
+        dashed: false,
+        dots: true,
+    };
+    let dashed = |label: String, points: Vec<(f64, f64)>, colour: RGBColor| Series {
+        label,
+        points,
+        colour,
+        dashed: true,
+        dots: false,
+    };
+    let traction = |p: &Patch| -> Vec<(f64, f64)> {
+        p.y0.iter()
+            .map(|c| (c.x_mm, c.px_mpa.hypot(c.py_mpa)))
+            .collect()
+    };
+    let bound =
+        |p: &Patch| -> Vec<(f64, f64)> { p.y0.iter().map(|c| (c.x_mm, mu * c.pn_mpa)).collect() };
+    let slip = |p: &Patch| -> Vec<(f64, f64)> {
+        p.y0.iter()
+            .map(|c| (c.x_mm, c.slip_velocity_mm_s))
+            .collect()
+    };
+    let wear = |p: &Patch| -> Vec<(f64, f64)> {
+        p.strips.iter().map(|s| (s.y_mm, s.wear_depth_um)).collect()
+    };
+    let force = |p: &Patch| -> Vec<(f64, f64)> {
+        p.strips
+            .iter()
+            .filter(|s| s.width_mm > 0.0)
+            .map(|s| (s.y_mm, s.fx_n.hypot(s.fy_n) / s.width_mm))
+            .collect()
+    };
+    let file = dir.join("y0.svg");
+    let areas = panels(
+        &file,
+        &format!("Strip through y = 0 — {case}"),
+        patches.len(),
+    )?;
+    let n = patches.len();
+    for (k, c) in patches.iter().enumerate() {
+        // the bounds first, so that the tractions stay visible where they reach them (slip)
+        let mut upper = vec![
+            solid(format!("μ·p_n, {model}"), bound(c.model), BOUND_COLOUR),
+            solid(format!("|p_t|, {model}"), traction(c.model), MODEL_COLOUR),
+        ];
+        let mut lower = vec![solid(
+            format!("slip velocity, {model}"),
+            slip(c.model),
+            SLIP_VELOCITY_COLOUR,
+        )];
+        if let Some(r) = c.reference {
+            upper.insert(
+                1,
+                dashed(
+                    format!("μ·p_n, {reference}"),
+                    bound(r),
+                    REFERENCE_BOUND_COLOUR,
+                ),
+            );
+            upper.push(dashed(format!("|p_t|, {reference}"), traction(r), BLACK));
+            lower.push(dashed(
+                format!("slip velocity, {reference}"),
+                slip(r),
+                BLACK,
+            ));
+        }
+        line_chart(
+            &areas[k],
+            &format!("{}: traction and its bound", c.heading),
+            15,
+            ("x (rolling direction), mm", "MPa"),
+            &upper,
+        )?;
+        line_chart(
+            &areas[n + k],
+            &format!("{}: slip velocity", c.heading),
+            15,
+            ("x (rolling direction), mm", "slip velocity, mm/s"),
+            &lower,
+        )?;
+    }
+    if let Some(a) = areas.first() {
+        a.present().map_err(err)?;
+    }
+    drop(areas);
+    let file = dir.join("strips.svg");
+    let areas = panels(&file, &format!("Per strip — {case}"), patches.len())?;
+    for (k, c) in patches.iter().enumerate() {
+        let mut w = vec![solid(
+            format!("wear depth, {model}"),
+            wear(c.model),
+            MODEL_COLOUR,
+        )];
+        let mut f = vec![solid(
+            format!("|F_t|/δy, {model}"),
+            force(c.model),
+            MODEL_COLOUR,
+        )];
+        if let Some(r) = c.reference {
+            w.push(dashed(format!("wear depth, {reference}"), wear(r), BLACK));
+            f.push(dashed(format!("|F_t|/δy, {reference}"), force(r), BLACK));
+        }
+        line_chart(
+            &areas[k],
+            &format!("{}: KTH wear depth per passage", c.heading),
+            15,
+            ("strip centre y, mm", "wear depth, µm"),
+            &w,
+        )?;
+        line_chart(
+            &areas[n + k],
+            &format!("{}: tangential force per unit strip width", c.heading),
+            15,
+            ("strip centre y, mm", "|F_t|/δy, N/mm"),
+            &f,
+        )?;
+    }
+    if let Some(a) = areas.first() {
+        a.present().map_err(err)?;
+    }
     Ok(())
 }
 
@@ -432,7 +693,68 @@ pub fn sweep_plots(
 
 #[cfg(test)]
 mod tests {
-    use super::{equal_aspect, value_range};
+    use super::{equal_aspect, value_range, write_profiles, Compared};
+    use crate::doc::{Patch, StripOut, Y0Cell};
+
+    /// A patch at `y_ref` with a few strips and y0 cells scaled by `k`.
+    fn patch(y_ref: f64, k: f64) -> Patch {
+        Patch {
+            y_ref_mm: y_ref,
+            strips: (0..5)
+                .map(|j| StripOut {
+                    y_mm: j as f64 - 2.0,
+                    width_mm: 1.0,
+                    fx_n: k * 10.0,
+                    fy_n: k * j as f64,
+                    wear_depth_um: k * 1e-3,
+                    ..StripOut::default()
+                })
+                .collect(),
+            y0: (0..7)
+                .map(|i| Y0Cell {
+                    x_mm: i as f64 - 3.0,
+                    pn_mpa: 900.0 - 90.0 * (i as f64 - 3.0).powi(2),
+                    px_mpa: k * 20.0 * i as f64,
+                    slip_velocity_mm_s: if i < 2 { 100.0 * k } else { 0.0 },
+                    ..Y0Cell::default()
+                })
+                .collect(),
+            ..Patch::default()
+        }
+    }
+
+    #[test]
+    fn profiles_draw_one_column_per_patch_and_the_reference_where_paired() {
+        let d = std::env::temp_dir().join(format!("wrc-plot-unit-{}", std::process::id()));
+        let (m0, m1, r0) = (patch(-5.0, 1.0), patch(30.0, 2.0), patch(-5.0, 1.1));
+        let compared = [
+            Compared {
+                heading: "patch 0".into(),
+                model: &m0,
+                reference: Some(&r0),
+            },
+            Compared {
+                heading: "patch 1".into(),
+                model: &m1,
+                reference: None,
+            },
+        ];
+        write_profiles(&d, "case", 0.3, &compared, "the model", "the reference").unwrap();
+        for f in ["y0.svg", "strips.svg"] {
+            let s = std::fs::read_to_string(d.join(f)).unwrap();
+            assert!(s.starts_with("<svg") || s.starts_with("<?xml"), "{f}");
+            assert!(s.contains("patch 0") && s.contains("patch 1"), "{f}");
+            assert!(
+                s.contains("the model") && s.contains("the reference"),
+                "{f}"
+            );
+            // the reference in the first column only: once per panel of that column
+            let n = s.matches("the reference").count();
+            let expected = if f == "y0.svg" { 3 } else { 2 };
+            assert_eq!(n, expected, "{f}");
+        }
+        let _ = std::fs::remove_dir_all(&d);
+    }
 
     #[test]
     fn equal_aspect_gives_one_scale_for_x_and_y() {

@@ -161,6 +161,7 @@ pub fn kernel_strips<T: Real, const S: usize, const C: usize>(
             crate::doc::StripOut {
                 y_mm: s.y.to_f64(),
                 half_length_mm: s.a.to_f64(),
+                width_mm: s.dy.to_f64(),
                 fn_n: t.fn_.to_f64(),
                 fx_n: t.fx.to_f64(),
                 fy_n: t.fy.to_f64(),

@@ -136,6 +136,7 @@ pub fn run(a: &SweepArgs) -> Result<(), String> {
                 common,
                 json: a.json,
                 plot: None,
+                plot_reference: false,
                 table: None,
                 given: vec![],
             };

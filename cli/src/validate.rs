@@ -85,6 +85,12 @@ pub fn check_common(c: &Common) -> Result<(), String> {
 pub fn check_solve(a: &SolveArgs) -> Result<(), String> {
     let c = &a.common;
     check_common(c)?;
+    if a.plot_reference && a.plot.is_none() {
+        return Err(
+            "--plot-reference draws the exact reference into the plots of --plot: give --plot DIR"
+                .into(),
+        );
+    }
     let elliptic = a.ellipse.is_some() || a.curvatures.is_some();
     let has = |f: &str| a.given.iter().any(|g| g == f);
     if elliptic {

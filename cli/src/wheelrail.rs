@@ -445,6 +445,7 @@ fn patch_strips<T: Real, const C: usize>(
                     StripOut {
                         y_mm: set.y[j].to_f64(),
                         half_length_mm: set.a[j].to_f64(),
+                        width_mm: set.dy[j].to_f64(),
                         fn_n: (set.stiffness[j] * set.h[j] * set.dy[j]).to_f64(),
                         fx_n: t.fx.to_f64(),
                         fy_n: t.fy.to_f64(),

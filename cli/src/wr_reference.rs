@@ -205,6 +205,7 @@ fn norm_strips<T: Real>(
                 StripOut {
                     y_mm: r.y,
                     half_length_mm: half,
+                    width_mm: g.dy,
                     fn_n: r.totals.fn_.to_f64(),
                     fx_n: r.totals.fx.to_f64(),
                     fy_n: r.totals.fy.to_f64(),

@@ -944,6 +944,8 @@ fn plots_follow_the_data_and_name_the_case() {
         "slip_velocity.svg",
         "wear_cells.svg",
         "wear.svg",
+        "y0.svg",
+        "strips.svg",
     ] {
         let s = read(f);
         assert!(
@@ -1094,6 +1096,7 @@ fn check_strips(p: &serde_json::Value, what: &str) -> Vec<[f64; 4]> {
         assert!(y >= last_y, "{what}: strips not ordered by y");
         last_y = y;
         assert!(f(s, "half_length_mm") > 0.0, "{what}: {s}");
+        assert!(f(s, "width_mm") > 0.0, "{what}: {s}");
         sn += f(s, "fn_n");
         sx += f(s, "fx_n");
         sy += f(s, "fy_n");
@@ -1251,4 +1254,151 @@ fn strips_and_y0_for_every_wheel_rail_model() {
     a[2] = "5";
     let d = json(&a);
     check_strips(&d["patches"][0], "dy 5");
+}
+
+/// The legend name of the exact reference in y0.svg and strips.svg (`--plot-reference`).
+const REFERENCE_LABEL: &str = "reference: exact on norm";
+
+/// Reads y0.svg and strips.svg of `dir`, checks that each is an SVG document whose legend names
+/// the model's curves (`model`, e.g. "fastrip-ac on stripes") and, iff `reference`, the
+/// reference's; returns the two documents.
+fn check_profile_plots(dir: &std::path::Path, model: &str, reference: bool) -> [String; 2] {
+    let read =
+        |f: &str| std::fs::read_to_string(dir.join(f)).unwrap_or_else(|e| panic!("{f}: {e}"));
+    let (y0, strips) = (read("y0.svg"), read("strips.svg"));
+    for (f, s, labels) in [
+        (
+            "y0.svg",
+            &y0,
+            &["|p_t|, ", "μ·p_n, ", "slip velocity, "][..],
+        ),
+        ("strips.svg", &strips, &["wear depth, ", "|F_t|/δy, "][..]),
+    ] {
+        let t = s.trim_start();
+        assert!(t.starts_with("<svg") || t.starts_with("<?xml"), "{f}");
+        assert!(s.trim_end().ends_with("</svg>"), "{f} is complete");
+        for l in labels {
+            assert!(s.contains(&format!("{l}{model}")), "{f}: legend {l}{model}");
+            assert_eq!(
+                s.contains(&format!("{l}{REFERENCE_LABEL}")),
+                reference,
+                "{f}: legend {l}{REFERENCE_LABEL}"
+            );
+        }
+        assert_eq!(s.contains(REFERENCE_LABEL), reference, "{f}");
+    }
+    [y0, strips]
+}
+
+#[test]
+fn plots_of_y0_and_strips_beside_the_reference_for_an_ellipse() {
+    let d = scratch("profile-plots-ellipse");
+    let base = [
+        "solve",
+        "--ellipse",
+        "6,4",
+        "--fn",
+        "80000",
+        "--xi",
+        "0.001",
+        "--eta",
+        "0.0005",
+        "--json",
+    ];
+    for (extra, model) in [
+        (&["--tangential", "fastsim"][..], "fastsim-hertz on hertz"),
+        (
+            &["--tangential", "fastrip", "--normal", "norm"][..],
+            "fastrip-hertz on norm",
+        ),
+        // the model is the reference: drawn once more as such, no second run needed
+        (
+            &["--tangential", "exact", "--normal", "norm"][..],
+            "exact on norm",
+        ),
+    ] {
+        for reference in [false, true] {
+            let dir = d.join(format!("{}-{reference}", extra.join("-")));
+            let mut a = base.to_vec();
+            a.extend_from_slice(extra);
+            a.extend_from_slice(&["--plot", dir.to_str().unwrap()]);
+            if reference {
+                a.push("--plot-reference");
+            }
+            let doc = json(&a);
+            assert!(
+                doc["status"]["warnings"].as_array().unwrap().is_empty(),
+                "{a:?}: {}",
+                doc["status"]
+            );
+            let [y0, _] = check_profile_plots(&dir, model, reference);
+            assert!(y0.contains("ellipse 6×4 mm"), "title names the case");
+        }
+    }
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+/// A wheel/rail case at a coarse model grid: the reference (NORM and TANG on their own grid,
+/// about 2 s) is drawn beside FaStrip, the JSON stays the model's.
+#[test]
+fn plots_of_y0_and_strips_beside_the_reference_for_a_wheel_rail_case() {
+    let d = scratch("profile-plots-wr");
+    let args = |dir: &std::path::Path, reference: bool| {
+        let mut a = vec![
+            "solve".to_string(),
+            "--dy".into(),
+            "-2".into(),
+            "--fz".into(),
+            "83300".into(),
+            "--strips".into(),
+            "8".into(),
+            "--cells".into(),
+            "16".into(),
+            "--json".into(),
+            "--plot".into(),
+            dir.to_str().unwrap().into(),
+        ];
+        if reference {
+            a.push("--plot-reference".into());
+        }
+        a
+    };
+    let mut docs = vec![];
+    for reference in [false, true] {
+        let dir = d.join(format!("{reference}"));
+        let a = args(&dir, reference);
+        let doc = json(&a.iter().map(String::as_str).collect::<Vec<_>>());
+        assert!(
+            doc["status"]["warnings"].as_array().unwrap().is_empty(),
+            "{}",
+            doc["status"]
+        );
+        check_profile_plots(&dir, "fastrip-ac on stripes", reference);
+        docs.push(doc);
+    }
+    assert_eq!(docs[1]["inputs"]["tangential"], "fastrip");
+    assert_eq!(
+        docs[0]["patches"], docs[1]["patches"],
+        "the model's patches"
+    );
+    let _ = std::fs::remove_dir_all(&d);
+}
+
+#[test]
+fn plot_reference_needs_plot() {
+    let e = fails_with(&[
+        "solve",
+        "--ellipse",
+        "6,4",
+        "--fn",
+        "80000",
+        "--plot-reference",
+    ]);
+    assert!(
+        e.contains("--plot-reference") && e.contains("--plot DIR"),
+        "{e}"
+    );
+    assert_eq!(e.trim_end().lines().count(), 1, "{e}");
+    let e = fails_with(&["solve", "--dy", "1", "--plot-reference", "--json"]);
+    assert!(e.contains("--plot-reference"), "{e}");
 }
