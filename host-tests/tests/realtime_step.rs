@@ -157,10 +157,11 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
 
 /// Issue 14's accuracy against the converged solver, 1000 states with yaw within ±3 mrad:
 /// |ΔN|/F_z ≤ 0.5 %, area ≤ 3 % and pmax ≤ 3 % on every state (measured max 0.07 %, 1.8 %,
-/// 2.7 %); force at P95 (1 % of μF_z; measured 0.80 %). The force maximum misses the target:
-/// 2.3 % (flange at low load, dy −7.78 mm, 25 kN: the closed form's 8 slip intervals against the
-/// cell FaStrip, docs/realtime.md), asserted at 3 % so that a slot mismatch (a
-/// patch changing slot between nodes: 5.1 % and pmax 50 % before the slots were continued by
+/// 2.7 %); force at P95 (1 % of μF_z; measured 0.69 %). The force maximum misses the target:
+/// 1.41 % at the flange root (dy −5.71 mm, 71 kN: interpolation of the rolling radius and the
+/// reference point between shift nodes, docs/realtime.md; 2.3 % in flange contact before the
+/// slip zone's integrator kept the explicit rule up to z = 1), asserted at 2 % so that a slot
+/// mismatch (a patch changing slot between nodes: 5.1 % and pmax 50 % before the slots were continued by
 /// prediction) cannot return. pmax was 8.6 % at dy −3.37 mm on the evenly spaced 0.25 mm grid
 /// (pmax/F^{1/3} not linear between nodes); the refined grid (71 nodes) brought it to 2.7 %,
 /// the remainder at dy −3.313 mm, within 1 µm of a node: interpolation in the load.
@@ -171,14 +172,15 @@ fn realtime_step_against_the_converged_solver() {
     assert!(sa.2 <= 0.03, "area {sa:?}");
     assert!(sf.1 <= 0.01, "force P95 {sf:?}");
     assert!(sp.1 <= 0.03, "pmax P95 {sp:?}");
-    assert!(sf.2 <= 0.03, "force max {sf:?}");
+    assert!(sf.2 <= 0.02, "force max {sf:?}");
     assert!(sp.2 <= 0.03, "pmax max {sp:?}");
 }
 
 /// The same at yaw within ±10 mrad (curving): the table is built at yaw 0, the step moves the
 /// contact point with yaw (first order) but not the gap, which yaw changes at second order. The
-/// targets hold as at ±3 mrad (measured: load max 0.05 %, area max 2.1 %, force P95 0.75 %,
-/// pmax P95 0.53 %; force max 1.8 %, flange at 76 kN, dy −7.85 mm) except the pmax maximum,
+/// targets hold as at ±3 mrad (measured: load max 0.06 %, area max 2.1 %, force P95 0.59 %,
+/// pmax P95 0.53 %; force max 1.42 %, flange root at 34 kN, dy −5.19 mm, asserted at 2 %) except
+/// the pmax maximum,
 /// 3.9 % at dy −3.313 mm, 84 kN, yaw −7.2 mrad (8.7 % on the evenly spaced grid), asserted at
 /// 4 %. Before the slip zone's direction field was integrated L-stably, large creepage on
 /// lightly loaded strips gave 0.77 μN in full slip (force max 23 %).
@@ -189,7 +191,7 @@ fn realtime_step_at_large_yaw() {
     assert!(sa.2 <= 0.03, "area {sa:?}");
     assert!(sf.1 <= 0.01, "force P95 {sf:?}");
     assert!(sp.1 <= 0.03, "pmax P95 {sp:?}");
-    assert!(sf.2 <= 0.03, "force max {sf:?}");
+    assert!(sf.2 <= 0.02, "force max {sf:?}");
     assert!(sp.2 <= 0.04, "pmax max {sp:?}");
 }
 
