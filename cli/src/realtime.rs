@@ -336,7 +336,7 @@ fn solve_in<T: Real>(a: &SolveArgs, bytes: &[u8]) -> Result<serde_json::Value, S
         "patches": patches,
         "total": {"fn_n": fn_t, "fx_n": fx_t, "fy_n": fy_t, "mz_nmm": mz_t},
         "status": {
-            "path": "realtime", "converged": true, "iterations": wrc_kernel::step::ROUNDS,
+            "path": "realtime", "converged": true, "iterations": wrc_kernel::step::COLD_ROUNDS,
             "warnings": warnings,
             "vertical_approach_mm": r.vertical_approach.to_f64(),
             "vertical_load_n": r.vertical_load.to_f64(),

@@ -125,20 +125,51 @@ pub fn creepages_at<T: Real>(
     frame: &PatchFrame<T>,
     kin: &Kinematics<T>,
 ) -> Result<Creepages<T>, Error> {
+    let trig = PoseTrig {
+        yaw: (math::sin(pose.yaw), math::cos(pose.yaw)),
+        roll: (math::sin(pose.roll), math::cos(pose.roll)),
+    };
+    let angle = (math::sin(frame.angle), math::cos(frame.angle));
+    creepages_trig(pose, &trig, side, wheel_cz, frame, angle, kin)
+}
+
+/// Sines and cosines of a wheelset pose's yaw and roll, (sin, cos) each: computed once per call
+/// by a caller that evaluates several patches ([`creepages_trig`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PoseTrig<T> {
+    /// (sin ψ, cos ψ) of the yaw.
+    pub yaw: (T, T),
+    /// (sin φ, cos φ) of the roll.
+    pub roll: (T, T),
+}
+
+/// [`creepages_at`] with the trigonometry given: `trig` of the pose's yaw and roll and `angle`
+/// = (sin δ, cos δ) of `frame.angle` (the real-time step computes them once, by series).
+///
+/// Errors: as [`creepages`].
+pub fn creepages_trig<T: Real>(
+    pose: &super::placement::WheelsetPose<T>,
+    trig: &PoseTrig<T>,
+    side: Side,
+    wheel_cz: T,
+    frame: &PatchFrame<T>,
+    angle: (T, T),
+    kin: &Kinematics<T>,
+) -> Result<Creepages<T>, Error> {
     crate::error::check_positive(kin.speed, "speed")?;
     crate::error::check_finite(kin.pitch_rate, "pitch_rate")?;
     crate::error::check_finite(kin.lateral_velocity, "lateral_velocity")?;
     crate::error::check_finite(kin.yaw_rate, "yaw_rate")?;
     crate::error::check_finite(kin.roll_rate, "roll_rate")?;
-    let (cpsi, spsi) = (math::cos(pose.yaw), math::sin(pose.yaw));
-    let (cphi, sphi) = (math::cos(pose.roll), math::sin(pose.roll));
+    let (spsi, cpsi) = trig.yaw;
+    let (sphi, cphi) = trig.roll;
     let axle = [-spsi * cphi, cpsi * cphi, sphi];
     let omega = [
         kin.pitch_rate * axle[0] + kin.roll_rate,
         kin.pitch_rate * axle[1],
         kin.pitch_rate * axle[2] + kin.yaw_rate,
     ];
-    let (sd, cd) = (math::sin(frame.angle), math::cos(frame.angle));
+    let (sd, cd) = angle;
     let n = match side {
         Side::Left => [T::ZERO, -sd, cd],
         Side::Right => [T::ZERO, sd, cd],

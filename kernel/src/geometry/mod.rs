@@ -33,7 +33,10 @@ pub mod placement;
 pub mod profile;
 pub mod table;
 
-pub use creep::{creepages, creepages_at, creepages_seed_a, Creepages, Kinematics, Normalisation};
+pub use creep::{
+    creepages, creepages_at, creepages_seed_a, creepages_trig, Creepages, Kinematics,
+    Normalisation, PoseTrig,
+};
 pub use isosceles::{isosceles_rigid_pair, IsoscelesPair};
 pub use patch::{
     contact_patches, patches_at_normal_approach, sample_patch, Correspondence, Patch, PatchFrame,

@@ -677,7 +677,7 @@ pub const ONSET_SAMPLES: usize = 8;
 pub const ONSET_BISECTIONS: usize = 8;
 /// Steps of the direction field upstream of FaStrip's slip zone (FASTSIM slipping there; 4:
 /// the half step comes from three angle halvings).
-pub const UPSTREAM_STEPS: usize = 4;
+pub const UPSTREAM_STEPS: usize = 2;
 
 /// The continuum FASTSIM direction pass on one strip (Coulomb's law on the rigid slip, the
 /// default [`SlipRule::CoulombRigidSlip`]), in θ with x̄ = −a cos θ (θ = π the leading edge).
@@ -720,7 +720,8 @@ impl<T: Real> DirectionField<T> {
         let (vx, vy) = self.v(cos);
         let m = math::hypot_fast(vx, vy);
         if m > T::ZERO {
-            (-vx / m, -vy / m)
+            let inv = -T::ONE / m;
+            (vx * inv, vy * inv)
         } else {
             (T::ZERO, T::ZERO)
         }
@@ -777,29 +778,30 @@ impl<T: Real> DirectionField<T> {
         let wy = self.eta + self.phi * (self.xc - self.a * cos);
         let cross = self.wx * uy - wy * ux;
         let dot = self.wx * ux + wy * uy;
-        let r = (cos * self.dl * ux * uy - self.a_mp * cross * sin) / (sin * d);
-        (r, -self.a_mp * dot / d)
+        // one division: 1/(sin θ D)
+        let inv = T::ONE / (sin * d);
+        let r = (cos * self.dl * ux * uy - self.a_mp * cross * sin) * inv;
+        (r, -self.a_mp * dot * sin * inv)
     }
 }
 
-/// u turned by the angle β, |β| clamped to π/2 (series to β⁹, error below 3e-5 at π/2, then
-/// renormalised: no trigonometric call).
+/// u turned by the angle β, |β| clamped to π/2, by the Cayley form: t = tan(β/2) by its series
+/// to β⁹ (relative error below 2e-10 at |β| = 0.4, 4e-3 at the clamp), then
+/// (cos β, sin β) = (1 − t², 2t)/(1 + t²), exactly of unit length: one division and no
+/// trigonometric call.
 #[inline]
 fn turn<T: Real>(u: (T, T), beta: T) -> (T, T) {
-    let b = math::clamp(beta, -T::PI * T::HALF, T::PI * T::HALF);
-    let b2 = b * b;
-    let co = T::ONE
-        - b2 * (T::HALF
-            - b2 * (c::<T>(1.0 / 24.0) - b2 * (c::<T>(1.0 / 720.0) - b2 * c::<T>(1.0 / 40320.0))));
-    let si = b
+    let x = math::clamp(beta, -T::PI * T::HALF, T::PI * T::HALF) * T::HALF;
+    let x2 = x * x;
+    let t = x
         * (T::ONE
-            - b2 * (c::<T>(1.0 / 6.0)
-                - b2 * (c::<T>(1.0 / 120.0)
-                    - b2 * (c::<T>(1.0 / 5040.0) - b2 * c::<T>(1.0 / 362_880.0)))));
-    let (x, y) = (u.0 * co - u.1 * si, u.0 * si + u.1 * co);
-    // one Newton step towards |u| = 1
-    let k = (c::<T>(3.0) - (x * x + y * y)) * T::HALF;
-    (x * k, y * k)
+            + x2 * (c::<T>(1.0 / 3.0)
+                + x2 * (c::<T>(2.0 / 15.0)
+                    + x2 * (c::<T>(17.0 / 315.0) + x2 * c::<T>(62.0 / 2835.0)))));
+    let t2 = t * t;
+    let inv = T::ONE / (T::ONE + t2);
+    let (co, si) = ((T::ONE - t2) * inv, T::TWO * t * inv);
+    (u.0 * co - u.1 * si, u.0 * si + u.1 * co)
 }
 
 /// (cos, sin) of θ − h from those of θ and h.
@@ -808,16 +810,24 @@ fn step_down<T: Real>(cs: (T, T), h: (T, T)) -> (T, T) {
     (cs.0 * h.0 + cs.1 * h.1, cs.1 * h.0 - cs.0 * h.1)
 }
 
-/// One step of the direction from θ (cos/sin `a`) down by h to θ − h (`b`): ROS2, the
-/// second-order L-stable Rosenbrock method (γ = 1 + 1/√2, second order with any Jacobian), in
-/// the marching variable −θ, with the Jacobian of the relaxation term only. The relaxation
-/// towards the rigid slip's direction is stiff where a|w|/(μ p̂ L) ≫ 1/h (large creepage on a
-/// lightly loaded strip): an explicit step oscillates there and the slip zone's resultant fell
-/// to 0.77 μN (S1002/UIC60, dy −4.15 mm, ψ = 9.6 mrad, 28 kN). Where it is mild the explicit
-/// midpoint rule is the more accurate of the two at these step sizes: with ROS2 from z = γ h J = 1
-/// (blended from 0.5) the resultant's direction in flange contact (nearly full slip with spin,
-/// z ≈ 1) was about 1° off the cell FaStrip's, 2.3 % of μF_z; with the explicit rule up to z = 1
-/// and ROS2 from z = 2, 1.4 % (as with 16 intervals), at no cost.
+/// One step of the direction from θ (cos/sin `a`) through the midpoint (`mid`) down by h: a
+/// two-stage Rosenbrock-W method in the marching variable −θ, with the Jacobian J of the
+/// relaxation term only, scaled by a weight w ∈ [0, 1] (A = w J):
+/// W k₁ = g(u), W k₂ = g(u + (h/2) k₁) − γ h A k₁, u ← u + h k₂, W = 1 − γ h A.
+/// It is second order for any A (the W-method conditions b₁ + b₂ = 1, b₂ α = ½,
+/// b₂ γ₂₁ = −γ), the explicit midpoint rule at A = 0, and L-stable at A = J with
+/// γ = 1 + 1/√2 (R(∞) = 1 + (½ − 2γ)/γ² = 0), as ROS2. w rises smoothly with the stiffness
+/// z = γ h J from 0 at z = 1 to 1 at z = 2: continuous in the state, and one rate and slope,
+/// one rate and two rotations per step whatever z is (constant cost). The relaxation towards the
+/// rigid slip's direction is stiff where a|w|/(μ p̂ L) ≫ 1/h (large creepage on a lightly loaded
+/// strip): an explicit step oscillates there and the slip zone's resultant fell to 0.77 μN
+/// (S1002/UIC60, dy −4.15 mm, ψ = 9.6 mrad, 28 kN). Where it is mild the explicit midpoint rule
+/// is the more accurate at these step sizes: ROS2 (or Heun's rule, the W-form of ROS2 at A = 0)
+/// there put the resultant's direction in flange contact (nearly full slip with spin, z ≈ 1)
+/// about 1° off the cell FaStrip's, 2.3 % of μF_z (Heun's: 1.6 %).
+///
+/// Returns (the stage direction u + (h/2) k₁, the step's result). With `w_scale` = 0 the
+/// weight is 0 and the stage is the explicit Euler step of h/2 from `a`.
 #[inline]
 fn ros2<T: Real>(
     f: &DirectionField<T>,
@@ -825,45 +835,29 @@ fn ros2<T: Real>(
     h: T,
     a: (T, T),
     mid: (T, T),
-    b: (T, T),
-) -> (T, T) {
+    w_scale: T,
+) -> ((T, T), (T, T)) {
     let gamma = c::<T>(1.0 + core::f64::consts::FRAC_1_SQRT_2);
     let (r, dr) = f.rate_and_slope(a.0, a.1, u);
-    // stiffness z = γ h J: the explicit midpoint rule (RK2 through `mid`) below 1 (h J ≤ 0.59,
-    // where its amplification is within 6 % of the exact one), ROS2 above 2, blended smoothly
-    // between (continuous in the state)
+    // z = γ h dr = −γ h J (g = −r, J = −dr); an unstable direction (z < 0) is explicit
     let z = gamma * h * dr;
     let wgt = math::clamp(z - T::ONE, T::ZERO, T::ONE);
-    let wgt = wgt * wgt * (c::<T>(3.0) - T::TWO * wgt);
-    let explicit = if wgt < T::ONE {
-        let half = turn(u, -h * T::HALF * r);
-        Some(turn(u, -h * f.rate(mid.0, mid.1, half)))
-    } else {
-        None
-    };
-    let implicit = if wgt > T::ZERO {
-        // g = −r, J = −dr: 1 − γ h J (an unstable direction, J > 0, is taken explicitly)
-        let den = math::max(T::ONE + z, T::ONE);
-        let k1 = -r / den;
-        let k2 = (-f.rate(b.0, b.1, turn(u, h * k1)) - T::TWO * k1) / den;
-        Some(turn(u, h * (c::<T>(1.5) * k1 + T::HALF * k2)))
-    } else {
-        None
-    };
-    match (explicit, implicit) {
-        (Some(e), None) => e,
-        (None, Some(i)) => i,
-        (Some(e), Some(i)) => {
-            let (x, y) = (e.0 + wgt * (i.0 - e.0), e.1 + wgt * (i.1 - e.1));
-            let m = math::hypot(x, y);
-            if m > T::ZERO {
-                (x / m, y / m)
-            } else {
-                i
-            }
-        }
-        (None, None) => u,
-    }
+    let wgt = w_scale * wgt * wgt * (c::<T>(3.0) - T::TWO * wgt);
+    let wz = wgt * z; // −γ h A
+    let inv_den = T::ONE / math::max(T::ONE + wz, T::ONE);
+    let k1 = -r * inv_den;
+    let stage = turn(u, h * T::HALF * k1);
+    let k2 = (-f.rate(mid.0, mid.1, stage) + wz * k1) * inv_den;
+    (stage, turn(u, h * k2))
+}
+
+/// `x`, computed whichever branch uses it: the real-time strip forces evaluate every branch
+/// and select, so that their cost does not depend on the state ([`strip_forces`]); this keeps
+/// the compiler from moving a branch's work into the branch (`core::hint::black_box`, timing
+/// only: values are unchanged).
+#[inline(always)]
+fn computed<X>(x: X) -> X {
+    core::hint::black_box(x)
 }
 
 /// (cos, sin) of θ/2 from those of θ ∈ [0, π] (no trigonometric call, full precision at both
@@ -901,62 +895,77 @@ fn difference<T: Real>(b: (T, T), a: (T, T)) -> (T, T) {
 /// only through their cosines and sines (halvings and a short series): no trigonometric call.
 #[allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "no slip zone"
 fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, T, T) {
-    let (mut fx, mut fy, mut xpy) = (T::ZERO, T::ZERO, T::ZERO);
-    if !(top.0 < T::ONE) {
-        return (fx, fy, xpy); // θ_top = 0: no slip zone
-    }
+    // Every step below runs whatever the state (constant cost): a strip without slip zone
+    // (θ_top = 0) runs on a stand-in zone θ_top = π/2 whose result is discarded; the upstream
+    // march runs on a zero span where FASTSIM does not slip above θ_top; each interval computes
+    // the carried direction, the adhesion direction and the march started at FASTSIM's onset,
+    // and selects.
+    let empty = !(top.0 < T::ONE);
+    let top = if empty { (T::ZERO, T::ONE) } else { top };
     // θ ≥ θ_F ⇔ cos θ ≤ cos θ_F (θ ∈ [0, π])
     let upstream = onset.0 < top.0;
-    // the direction at θ_top, if FASTSIM already slips there
-    let mut u: Option<(T, T)> = None;
-    if upstream {
-        // Δ = θ_F − θ_top in UPSTREAM_STEPS = 4 steps: (cos, sin) of Δ/8 and Δ/4
-        let e = halve(halve(halve(difference(onset, top))));
-        let hh = (e.0 * e.0 - e.1 * e.1, T::TWO * e.0 * e.1);
-        let h = T::TWO * asin_small(e.1);
-        let mut cs = onset;
-        let mut v = f.adhesion_dir(onset.0);
-        for _ in 0..UPSTREAM_STEPS {
-            let next = step_down(cs, hh);
-            if cs.1 > T::ZERO {
-                v = ros2(f, v, h, cs, step_down(cs, e), next);
-            }
-            cs = next;
+    // the direction at θ_top, if FASTSIM already slips there: Δ = θ_F − θ_top in
+    // UPSTREAM_STEPS = 4 steps, (cos, sin) of Δ/8 and Δ/4
+    let span = if upstream {
+        difference(onset, top)
+    } else {
+        (T::ONE, T::ZERO)
+    };
+    let e8 = halve(halve(halve(span)));
+    let e = (e8.0 * e8.0 - e8.1 * e8.1, T::TWO * e8.0 * e8.1);
+    let hh = (e.0 * e.0 - e.1 * e.1, T::TWO * e.0 * e.1);
+    let h = c::<T>(4.0) * asin_small(e8.1);
+    let mut cs = onset;
+    let mut v = f.adhesion_dir(onset.0);
+    for _ in 0..UPSTREAM_STEPS {
+        let next = step_down(cs, hh);
+        // at an onset on the leading edge (sin θ_F = 0) the rate is singular: that step is
+        // skipped (computed at a stand-in point)
+        let live = cs.1 > T::ZERO;
+        let at = if live { cs } else { (T::ZERO, T::ONE) };
+        let w = computed(ros2(f, v, h, at, step_down(at, e), T::ONE).1);
+        if live {
+            v = w;
         }
-        u = Some(v);
+        cs = next;
     }
+    let mut u: Option<(T, T)> = if upstream { Some(v) } else { None };
     // SLIP_STEPS = 8 intervals of h = θ_top/8: (cos, sin) of h/4 by five halvings, h/2 doubled
     let hq = halve(halve(halve(halve(halve(top)))));
     let hh = (hq.0 * hq.0 - hq.1 * hq.1, T::TWO * hq.0 * hq.1);
     let h = c::<T>(4.0) * asin_small(hq.1);
+    let v_onset = f.adhesion_dir(onset.0);
+    let (mut fx, mut fy, mut xpy) = (T::ZERO, T::ZERO, T::ZERO);
     let mut hi = top; // upper node of the interval
     for k in 0..SLIP_STEPS {
         let m = step_down(hi, hh);
         let lo = step_down(m, hh);
-        let dir = match u {
-            // carry the direction to this midpoint: from θ_top (h/2, through θ_top − h/4) or
-            // from the previous midpoint (h, through the node `hi`)
-            Some(v) if k == 0 => {
-                let v = ros2(f, v, h * T::HALF, top, step_down(top, hq), m);
-                u = Some(v);
-                v
-            }
-            Some(v) => {
-                let v = ros2(f, v, h, step_down(hi, (hh.0, -hh.1)), hi, m);
-                u = Some(v);
-                v
-            }
-            None if m.0 <= onset.0 => f.adhesion_dir(m.0),
-            None => {
-                // FASTSIM's onset lies within h above this midpoint: start there, one step of
-                // θ_F − θ_m ≤ h with the rate at the midpoint (at an onset on the leading edge,
-                // sin θ_F → 0, the rate's anisotropy term is singular)
-                let v0 = f.adhesion_dir(onset.0);
-                let dist = asin_small(math::clamp(difference(onset, m).1, T::ZERO, c::<T>(0.4)));
-                let v = turn(v0, -dist * f.rate(m.0, m.1, v0));
-                u = Some(v);
-                v
-            }
+        // above FASTSIM's onset: the adhesion traction's direction
+        let adh = computed(f.adhesion_dir(m.0));
+        // below it, one step to this midpoint: the carried direction from θ_top (h/2) or from
+        // the previous midpoint (h); or, where FASTSIM's onset lies within h above this
+        // midpoint, from the onset's adhesion direction over θ_F − θ_m ≤ h with the rates at
+        // the midpoint (at an onset on the leading edge, sin θ_F → 0, the rate's anisotropy
+        // term is singular); above the onset the same step on a zero span, discarded
+        // (the onset's start is the stage of a step of 2(θ_F − θ_m), explicit: one Euler step)
+        let (start, hk, from, mid, w_scale) = match u {
+            Some(v) if k == 0 => (v, h * T::HALF, top, step_down(top, hq), T::ONE),
+            Some(v) => (v, h, step_down(hi, (hh.0, -hh.1)), hi, T::ONE),
+            None => (
+                v_onset,
+                T::TWO * asin_small(math::clamp(difference(onset, m).1, T::ZERO, c::<T>(0.4))),
+                m,
+                m,
+                T::ZERO,
+            ),
+        };
+        let (stage, full) = computed(ros2(f, start, hk, from, mid, w_scale));
+        let stepped = if u.is_some() { full } else { stage };
+        let dir = if u.is_none() && m.0 <= onset.0 {
+            adh
+        } else {
+            u = Some(stepped);
+            stepped
         };
         // exact weights of the interval: ∫ sin²θ dθ, ∫ −a cos θ sin²θ dθ
         let w0 = h * T::HALF - (hi.1 * hi.0 - lo.1 * lo.0) * T::HALF;
@@ -965,6 +974,9 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
         fy += w0 * dir.1;
         xpy += wx * dir.1;
         hi = lo;
+    }
+    if empty {
+        return (T::ZERO, T::ZERO, T::ZERO);
     }
     // p_n dx̄ = p̂ a sin²θ dθ
     let k = f.mp * f.a;
@@ -994,27 +1006,33 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 ///   Coulomb's law on s = w − L dp/dx, w = (ξ − φy, η + φx):
 ///   dα/dθ = cos θ (L1 − L2) u_x u_y / (sin θ D) − a (w × u)/(μ p̂ D), D = L1 u_y² + L2 u_x²,
 ///   integrated on [`SLIP_STEPS`] uniform intervals in θ whose weights ∫sin²θ dθ and
-///   ∫−a cos θ sin²θ dθ are exact, by the midpoint rule where the relaxation towards the rigid
-///   slip is mild and by ROS2 (L-stable) where it is stiff, blended in between (rotations by
-///   series: no trigonometric call);
+///   ∫−a cos θ sin²θ dθ are exact, by a two-stage Rosenbrock-W step that is the explicit
+///   midpoint rule where the relaxation towards the rigid slip is mild and L-stable (as ROS2)
+///   where it is stiff, continuously in between (rotations in the Cayley form: no
+///   trigonometric call); where FASTSIM already slips above the slip zone, the direction is
+///   carried down to it in [`UPSTREAM_STEPS`] steps;
 /// * a strip whose adhesion traction exceeds its semi-ellipse bound (`BoundCheck::Strip`, exact
 ///   here: |(κd q, λ'd q + φ*)| ≤ 1 for q = (S₁ − S₂)/(d S₁), convex in q, checked at the
 ///   leading edge q = (1 − √(1 − t))/d) carries FASTSIM's tractions, as in [`fastrip`]: p^F in
 ///   closed form over [x̄_F, a] and μ p_n along the direction field below.
 ///
-/// Every count is fixed (no data-dependent iteration). Against [`fastrip`] on a 6 × 4 mm Hertz
+/// Every count is fixed (no data-dependent iteration), and the cost does not depend on the
+/// state: both adhesion forms are evaluated and one selected, the slip zone runs all its steps
+/// even when it is empty (on a stand-in zone, discarded), and every interval computes the
+/// carried, the adhesion and the onset's direction and selects (the real-time step's constant
+/// cost, [`crate::step`]). Against [`fastrip`] on a 6 × 4 mm Hertz
 /// patch with 400 cells per strip (host-tests `realtime_step`): within 0.14 % of μN up to
-/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.66 % at pure spin φ = 1e-3 1/mm (the cell
+/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.67 % at pure spin φ = 1e-3 1/mm (the cell
 /// FaStrip is grid-converged there: FASTSIM re-adheres inside its slip zone under spin, which
 /// this direction field does not follow; following it, a free march in closed form until |p|
-/// reaches μ p_n again, brought this to 0.35 % but cost 4 % more instructions per step and put the
-/// Cortex-M7's worst state over its 150 k budget, with no change on the S1002/UIC60 sweep). In
-/// flange contact (φ ≈ 2.5e-4 1/mm, ξ ≈ −2.4e-3, nearly full slip) the resultant's direction was
-/// about 1° off the cell FaStrip's (up to 2.3 % of μN of the patch) while ROS2 took over from the
-/// explicit rule at z = γhJ = 1; with the switch at z = 1…2 (explicit below 1, ROS2 above 2) it is within the table's
-/// own error there (S1002/UIC60 sweep: force maximum 2.3 → 1.4 % of μF_z). Before this direction pass the slip zone took the
-/// strip theory's slip direction blended into the rigid slip's, 7.9 % of μN off at φ = 1e-3
-/// and 4.3 % of μF_z in flange contact.
+/// reaches μ p_n again, brought this to 0.35 % at 4 % more instructions per step, with no change
+/// on the S1002/UIC60 sweep). In flange contact (φ ≈ 2.5e-4 1/mm, ξ ≈ −2.4e-3, nearly full
+/// slip, stiffness z = γhJ ≈ 1) the resultant's direction was about 1° off the cell FaStrip's
+/// (up to 2.3 % of μN of the patch) with full ROS2 from z = 1 and 1.6 % with Heun's rule below
+/// z = 1; with the explicit midpoint rule below z = 1 it is within the table's own error there
+/// (S1002/UIC60 sweep: force maximum 1.4 % of μF_z). Before this direction pass the slip zone
+/// took the strip theory's slip direction blended into the rigid slip's, 7.9 % of μN off at
+/// φ = 1e-3 and 4.3 % of μF_z in flange contact.
 ///
 /// The resultant never exceeds μ times the strip load: the slip zone carries exactly μ p_n, the
 /// adhesion zone at most μ p_n (bound check). An empty strip (a_j, p̂_j or δy not positive) has
@@ -1105,64 +1123,74 @@ pub fn strip_forces<T: Real>(
         T::TWO * math::sqrt(math::max(T::ZERO, tau_f * (T::ONE - tau_f))),
     );
     let pi = T::PI;
-    let (mut fx, mut fy) = (T::ZERO, T::ZERO);
+    // Both adhesion zones are evaluated and one selected, and one slip zone always runs
+    // (constant cost, [`computed`]).
     // ∫ x̄ p_y dx̄ for the moment: M_z = ∫ (x p_y − y p_x) = x_c F_y + ∫ x̄ p_y − y F_x.
-    let mut xpy = T::ZERO;
-    if fastsim_strip {
-        // FASTSIM's adhesion zone x̄ ∈ [x̄_F, a], p = −(a − x̄)(A_x, B₀ + (φ/L3)(a + x̄)/2):
-        // with u = a − x̄ ∈ [0, U], U = 2a(1 − τ_F), closed forms.
+    // FASTSIM's adhesion zone x̄ ∈ [x̄_F, a], p = −(a − x̄)(A_x, B₀ + (φ/L3)(a + x̄)/2) (a strip
+    // failing the bound check): with u = a − x̄ ∈ [0, U], U = 2a(1 − τ_F), closed forms.
+    let fastsim_adhesion = computed({
         let uu = T::TWO * a * (T::ONE - tau_f);
         let u2 = uu * uu;
         let u3 = u2 * uu;
         let cc = field.b0 + field.ph * a;
         let e = field.ph * T::HALF;
-        fx -= field.ax * u2 * T::HALF;
-        fy -= cc * u2 * T::HALF - e * u3 / c::<T>(3.0);
-        xpy -= a * cc * u2 * T::HALF - (cc + a * e) * u3 / c::<T>(3.0) + e * u2 * u2 * c::<T>(0.25);
-        // and its slip zone below the onset
-        let (sx, sy, sm) = slip_zone(&field, onset, onset);
-        fx += sx;
-        fy += sy;
-        xpy += sm;
+        (
+            -field.ax * u2 * T::HALF,
+            -(cc * u2 * T::HALF - e * u3 / c::<T>(3.0)),
+            -(a * cc * u2 * T::HALF - (cc + a * e) * u3 / c::<T>(3.0) + e * u2 * u2 * c::<T>(0.25)),
+        )
+    });
+    // the strip solution's adhesion zone x̄ ∈ (2d − a, a], t = d/a (none at t = 1)
+    let t = if ss.full_slip {
+        T::ONE
     } else {
-        let t = if ss.full_slip {
-            T::ONE
+        math::clamp(ss.d / a, T::ZERO, T::ONE)
+    };
+    let strip_adhesion = computed({
+        let st = math::sqrt(t);
+        let as_t = math::asin(st);
+        let r = math::sqrt(t * (T::ONE - t));
+        let i1 = a * a * (pi * T::HALF - as_t - (T::TWO * t - T::ONE) * r);
+        // (I₁ − I₂)/d and (J₁ − J₂)/d.
+        let tail = if t > T::ZERO {
+            (as_t - (T::ONE - T::TWO * t) * r) / t
         } else {
-            math::clamp(ss.d / a, T::ZERO, T::ONE)
+            T::ZERO
         };
-        if t < T::ONE {
-            let st = math::sqrt(t);
-            let r = math::sqrt(t * (T::ONE - t));
-            let i1 = a * a * (pi * T::HALF - math::asin(st) - (T::TWO * t - T::ONE) * r);
-            // (I₁ − I₂)/d and (J₁ − J₂)/d.
-            let tail = if t > T::ZERO {
-                (math::asin(st) - (T::ONE - T::TWO * t) * r) / t
-            } else {
-                T::ZERO
-            };
-            let d_over = a * (pi * (T::ONE - t * T::HALF) - tail);
-            let omt = T::ONE - t;
-            let j1 = c::<T>(8.0 / 3.0) * a * a * a * r * r * r;
-            let j_over =
-                a * a * (c::<T>(8.0 / 3.0) * st * omt * math::sqrt(omt) - pi * omt * omt * T::HALF);
-            let p = ss.slope;
-            fx += p * ss.kd * d_over;
-            fy += p * (ss.ld * d_over + ss.phi_star * i1);
-            xpy += p * (ss.ld * j_over + ss.phi_star * j1);
-        }
-        if t > T::ZERO {
-            // slip zone θ ∈ [0, θ₁], θ₁ = 2 asin √t: sin θ₁ = 2√(t(1 − t)), cos θ₁ = 1 − 2t;
-            // μ p_n in the direction pass's direction
-            let top = (
-                T::ONE - T::TWO * t,
-                T::TWO * math::sqrt(math::max(T::ZERO, t * (T::ONE - t))),
-            );
-            let (sx, sy, sm) = slip_zone(&field, top, onset);
-            fx += sx;
-            fy += sy;
-            xpy += sm;
-        }
-    }
+        let d_over = a * (pi * (T::ONE - t * T::HALF) - tail);
+        let omt = T::ONE - t;
+        let j1 = c::<T>(8.0 / 3.0) * a * a * a * r * r * r;
+        let j_over =
+            a * a * (c::<T>(8.0 / 3.0) * st * omt * math::sqrt(omt) - pi * omt * omt * T::HALF);
+        let p = ss.slope;
+        (
+            p * ss.kd * d_over,
+            p * (ss.ld * d_over + ss.phi_star * i1),
+            p * (ss.ld * j_over + ss.phi_star * j1),
+        )
+    });
+    let (mut fx, mut fy, mut xpy) = if fastsim_strip {
+        fastsim_adhesion
+    } else if t < T::ONE {
+        strip_adhesion
+    } else {
+        (T::ZERO, T::ZERO, T::ZERO)
+    };
+    // the slip zone: below FASTSIM's onset for a strip failing the bound check; else
+    // θ ∈ [0, θ₁], θ₁ = 2 asin √t: sin θ₁ = 2√(t(1 − t)), cos θ₁ = 1 − 2t (none at t = 0);
+    // μ p_n in the direction pass's direction
+    let top = if fastsim_strip {
+        onset
+    } else {
+        (
+            T::ONE - T::TWO * t,
+            T::TWO * math::sqrt(math::max(T::ZERO, t * (T::ONE - t))),
+        )
+    };
+    let (sx, sy, sm) = slip_zone(&field, top, onset);
+    fx += sx;
+    fy += sy;
+    xpy += sm;
     let mz = s.xc * fy + xpy - s.y * fx;
     let out = (fx * s.dy, fy * s.dy, mz * s.dy);
     if !(math::is_finite(out.0) && math::is_finite(out.1) && math::is_finite(out.2)) {
