@@ -305,6 +305,26 @@ enum wrc_status wrc_step_f64(const uint8_t *table,
                              const struct wrc_step_input_f64 *input,
                              struct wrc_step_output_f64 *output);
 
+// The step of a time loop: as [`wrc_step_f64`] with one round of the normal–tangential
+// coupling instead of two, started from `previous`, this wheel's output of the previous time
+// step on the same table (from [`wrc_step_f64`] or this function; it may be the same struct as
+// `output`: it is read before `output` is written). About half the cost of [`wrc_step_f64`];
+// at a fixed state it gives [`wrc_step_f64`]'s result when `previous` is that state's first
+// round, and along a time series the coupling lags one step (docs/realtime.md). Call
+// [`wrc_step_f64`] for the first step of a loop.
+//
+// Returns the codes of [`wrc_step_f64`], and `WRC_ERR_NULL_POINTER` for a NULL `previous`,
+// `WRC_ERR_BAD_ARGUMENT` if its slot count is not the table's, `WRC_ERR_NON_FINITE` for a
+// previous output with a negative or non-finite load or a non-finite lateral force.
+//
+// # Safety
+// As [`wrc_step_f64`]; `previous` is NULL or points to a valid `wrc_step_output_f64`.
+enum wrc_status wrc_step_from_f64(const uint8_t *table,
+                                  size_t len,
+                                  const struct wrc_step_input_f64 *input,
+                                  const struct wrc_step_output_f64 *previous,
+                                  struct wrc_step_output_f64 *output);
+
 // As [`wrc_step_f64`] in f32 on an f32 table.
 //
 // # Safety
@@ -313,6 +333,16 @@ enum wrc_status wrc_step_f32(const uint8_t *table,
                              size_t len,
                              const struct wrc_step_input_f32 *input,
                              struct wrc_step_output_f32 *output);
+
+// As [`wrc_step_from_f64`] in f32 on an f32 table.
+//
+// # Safety
+// As [`wrc_step_from_f64`], with the f32 structs.
+enum wrc_status wrc_step_from_f32(const uint8_t *table,
+                                  size_t len,
+                                  const struct wrc_step_input_f32 *input,
+                                  const struct wrc_step_output_f32 *previous,
+                                  struct wrc_step_output_f32 *output);
 
 // Size in bytes of an f64 table with `n_dy` × `n_load` nodes, `slots` slots and `strips`
 // strips (to size a buffer before reading a table file). `*out_len` receives it (0 and

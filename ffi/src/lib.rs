@@ -28,7 +28,7 @@
 
 use core::ffi::c_char;
 use wrc_kernel::geometry::{Kinematics, Normalisation, Side, WheelsetPose};
-use wrc_kernel::step::{step, StepInput, StepResult};
+use wrc_kernel::step::{step, step_from, SlotResult, StepInput, StepResult};
 use wrc_kernel::table::{ContactTable, TableHeader, HEADER_BYTES, NODE_FIXED, SLOT_FIXED};
 use wrc_kernel::{Error, Real};
 
@@ -349,6 +349,9 @@ trait Precision: Real {
     type Out: Copy + Default;
     fn input(i: &Self::In) -> Result<StepInput<Self>, wrc_status>;
     fn output(r: &StepResult<Self, WRC_MAX_SLOTS>, n: usize) -> Self::Out;
+    /// The kernel result a previous output stands for (slot loads and lateral forces, which
+    /// `step_from` uses) and its slot count.
+    fn previous(o: &Self::Out) -> (StepResult<Self, WRC_MAX_SLOTS>, u32);
 }
 
 fn normalisation(code: u32) -> Result<Normalisation, wrc_status> {
@@ -408,6 +411,18 @@ macro_rules! precision {
                 o.vertical_load = r.vertical_load;
                 o.n_slots = n as u32;
                 o
+            }
+            fn previous(o: &$output) -> (StepResult<$t, WRC_MAX_SLOTS>, u32) {
+                let mut r = StepResult {
+                    slots: [SlotResult::default(); WRC_MAX_SLOTS],
+                    vertical_approach: o.vertical_approach,
+                    vertical_load: o.vertical_load,
+                };
+                for (d, s) in r.slots.iter_mut().zip(o.slots.iter()) {
+                    d.load = s.load;
+                    d.fy = s.fy;
+                }
+                (r, o.n_slots)
             }
         }
     };
@@ -469,32 +484,51 @@ unsafe fn table_check<T: Real>(
     status(r)
 }
 
-fn run<T: Precision>(bytes: &[u8], input: &T::In) -> Result<T::Out, wrc_status> {
+/// The step on `bytes` at `input`: [`step`] without a previous output, [`step_from`] with one.
+fn run<T: Precision>(
+    bytes: &[u8],
+    input: &T::In,
+    previous: Option<&T::Out>,
+) -> Result<T::Out, wrc_status> {
     let t = ContactTable::<T>::from_verified_bytes(bytes)?;
     capacity(&t.header)?;
     let inp = T::input(input)?;
-    let r = step::<T, WRC_MAX_SLOTS, WRC_MAX_STRIPS>(&t, &inp)?;
+    let r = match previous {
+        None => step::<T, WRC_MAX_SLOTS, WRC_MAX_STRIPS>(&t, &inp)?,
+        Some(p) => {
+            let (prev, n) = T::previous(p);
+            if n as usize != t.header.slots {
+                return Err(wrc_status::WRC_ERR_BAD_ARGUMENT);
+            }
+            step_from::<T, WRC_MAX_SLOTS, WRC_MAX_STRIPS>(&t, &inp, &prev)?
+        }
+    };
     Ok(T::output(&r, t.header.slots))
 }
 
 /// # Safety
-/// As [`wrc_step_f64`].
+/// As [`wrc_step_from_f64`], with `previous` NULL for [`wrc_step_f64`] (`use_previous` false).
 unsafe fn step_entry<T: Precision>(
     bytes: *const u8,
     len: usize,
     input: *const T::In,
+    previous: *const T::Out,
+    use_previous: bool,
     output: *mut T::Out,
 ) -> wrc_status {
     if output.is_null() {
         return wrc_status::WRC_ERR_NULL_POINTER;
     }
-    let r = if input.is_null() {
+    let r = if input.is_null() || (use_previous && previous.is_null()) {
         Err(wrc_status::WRC_ERR_NULL_POINTER)
     } else {
         // SAFETY: non-null; the caller passes a valid input struct (read unaligned).
         let inp = unsafe { input.read_unaligned() };
+        // SAFETY: non-null when used; the caller passes a valid output struct of the previous
+        // step (read unaligned, before `output` is written: the two may be the same).
+        let prev = use_previous.then(|| unsafe { previous.read_unaligned() });
         // SAFETY: forwarded contract of the entry point.
-        unsafe { table_slice(bytes, len) }.and_then(|b| run::<T>(b, &inp))
+        unsafe { table_slice(bytes, len) }.and_then(|b| run::<T>(b, &inp, prev.as_ref()))
     };
     // SAFETY: non-null (checked); the caller passes a valid, writable output struct (written
     // unaligned).
@@ -563,7 +597,33 @@ pub unsafe extern "C" fn wrc_step_f64(
     output: *mut wrc_step_output_f64,
 ) -> wrc_status {
     // SAFETY: the caller's contract is this function's.
-    unsafe { step_entry::<f64>(table, len, input, output) }
+    unsafe { step_entry::<f64>(table, len, input, core::ptr::null(), false, output) }
+}
+
+/// The step of a time loop: as [`wrc_step_f64`] with one round of the normal–tangential
+/// coupling instead of two, started from `previous`, this wheel's output of the previous time
+/// step on the same table (from [`wrc_step_f64`] or this function; it may be the same struct as
+/// `output`: it is read before `output` is written). About half the cost of [`wrc_step_f64`];
+/// at a fixed state it gives [`wrc_step_f64`]'s result when `previous` is that state's first
+/// round, and along a time series the coupling lags one step (docs/realtime.md). Call
+/// [`wrc_step_f64`] for the first step of a loop.
+///
+/// Returns the codes of [`wrc_step_f64`], and `WRC_ERR_NULL_POINTER` for a NULL `previous`,
+/// `WRC_ERR_BAD_ARGUMENT` if its slot count is not the table's, `WRC_ERR_NON_FINITE` for a
+/// previous output with a negative or non-finite load or a non-finite lateral force.
+///
+/// # Safety
+/// As [`wrc_step_f64`]; `previous` is NULL or points to a valid `wrc_step_output_f64`.
+#[no_mangle]
+pub unsafe extern "C" fn wrc_step_from_f64(
+    table: *const u8,
+    len: usize,
+    input: *const wrc_step_input_f64,
+    previous: *const wrc_step_output_f64,
+    output: *mut wrc_step_output_f64,
+) -> wrc_status {
+    // SAFETY: the caller's contract is this function's.
+    unsafe { step_entry::<f64>(table, len, input, previous, true, output) }
 }
 
 /// As [`wrc_step_f64`] in f32 on an f32 table.
@@ -578,7 +638,23 @@ pub unsafe extern "C" fn wrc_step_f32(
     output: *mut wrc_step_output_f32,
 ) -> wrc_status {
     // SAFETY: the caller's contract is this function's.
-    unsafe { step_entry::<f32>(table, len, input, output) }
+    unsafe { step_entry::<f32>(table, len, input, core::ptr::null(), false, output) }
+}
+
+/// As [`wrc_step_from_f64`] in f32 on an f32 table.
+///
+/// # Safety
+/// As [`wrc_step_from_f64`], with the f32 structs.
+#[no_mangle]
+pub unsafe extern "C" fn wrc_step_from_f32(
+    table: *const u8,
+    len: usize,
+    input: *const wrc_step_input_f32,
+    previous: *const wrc_step_output_f32,
+    output: *mut wrc_step_output_f32,
+) -> wrc_status {
+    // SAFETY: the caller's contract is this function's.
+    unsafe { step_entry::<f32>(table, len, input, previous, true, output) }
 }
 
 fn table_size(

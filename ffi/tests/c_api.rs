@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 use wrc_ffi::*;
 use wrc_host_tests::realtime::{s1002_uic60_table, standard_spec};
 use wrc_kernel::geometry::{Kinematics, Normalisation, WheelsetPose};
-use wrc_kernel::step::{step, StepInput};
+use wrc_kernel::step::{step, step_from, StepInput};
 use wrc_kernel::table::{ContactTable, TableSpec};
 use wrc_kernel::Real;
 
@@ -98,10 +98,14 @@ fn hex<T: Real>(x: T) -> String {
     }
 }
 
-/// The sweep line the C program must print, from the Rust API.
+/// The sweep line the C program must print, from the Rust API: `step`, or for the `g64`/`g32`
+/// lines `step_from` the cold step's result.
 fn expected_line<T: Real>(name: &str, bytes: &[u8], i: usize) -> String {
     let t = ContactTable::<T>::from_bytes(bytes).expect("valid table");
-    let r = step::<T, K, ST>(&t, &input::<T>(i)).expect("state inside the table");
+    let mut r = step::<T, K, ST>(&t, &input::<T>(i)).expect("state inside the table");
+    if name.starts_with('g') {
+        r = step_from::<T, K, ST>(&t, &input::<T>(i), &r).expect("state inside the table");
+    }
     let mut s = format!(
         "{name} {i} 0 {} {} {}",
         hex(r.vertical_approach),
@@ -286,6 +290,8 @@ fn c_program_matches_the_rust_api_bit_for_bit_and_checks_bad_inputs() {
         for (name, want) in [
             ("f64", expected_line::<f64>("f64", &t.f64, i)),
             ("f32", expected_line::<f32>("f32", &t.f32, i)),
+            ("g64", expected_line::<f64>("g64", &t.f64, i)),
+            ("g32", expected_line::<f32>("g32", &t.f32, i)),
         ] {
             let got = lines
                 .iter()
@@ -295,10 +301,10 @@ fn c_program_matches_the_rust_api_bit_for_bit_and_checks_bad_inputs() {
             compared += 1;
         }
     }
-    assert_eq!(compared, 50);
-    // every status the C program checked (3 successful loads, 26 bad inputs; it exits 1 on a
-    // mismatch)
-    assert_eq!(lines.iter().filter(|l| l.starts_with("bad ")).count(), 29);
+    assert_eq!(compared, 100);
+    // every status the C program checked (4 successful loads and steps, 29 bad inputs; it
+    // exits 1 on a mismatch)
+    assert_eq!(lines.iter().filter(|l| l.starts_with("bad ")).count(), 33);
 }
 
 fn step64(bytes: &[u8], len: usize, inp: &wrc_step_input_f64) -> (wrc_status, wrc_step_output_f64) {

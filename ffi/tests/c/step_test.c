@@ -8,6 +8,7 @@
  *   info <value_bytes> <n_dy> <n_load> <slots> <strips> <side> <total_bytes>
  *   f64 <i> <status> <vertical_approach> <vertical_load> <n_slots> then per used slot 15 values
  *   f32 <i> ... (same in f32)
+ *   g64 <i> ..., g32 <i> ... the time loop's step (wrc_step_from_*) from the cold step's output
  * for the S1002/UIC60 lateral-shift sweep dy = -8 + 0.5 i mm, i = 0..24 (F_z 83.3 kN, mu 0.3,
  * 100 km/h nominal rolling, R0 460 mm); every value as the hex of its IEEE bits (uint64 for
  * f64, uint32 for f32) so the comparison is exact. Then checks the bad-input status codes
@@ -143,6 +144,22 @@ int main(int argc, char **argv) {
         for (uint32_t k = 0; k < out32.n_slots && k < WRC_MAX_SLOTS; k++)
             print_slot32(&out32.slots[k]);
         printf("\n");
+        /* the time loop's step from the cold step's output, in place (previous == output) */
+        wrc_step_output_f64 loop = out;
+        s = wrc_step_f64(t64, n64, &in, &loop);
+        if (s == WRC_OK) s = wrc_step_from_f64(t64, n64, &in, &loop, &loop);
+        printf("g64 %d %d %016" PRIx64 " %016" PRIx64 " %u", i, (int)s,
+               bits64(loop.vertical_approach), bits64(loop.vertical_load), loop.n_slots);
+        for (uint32_t k = 0; k < loop.n_slots && k < WRC_MAX_SLOTS; k++)
+            print_slot64(&loop.slots[k]);
+        printf("\n");
+        wrc_step_output_f32 loop32 = out32;
+        s = wrc_step_from_f32(t32, n32, &in32, &out32, &loop32);
+        printf("g32 %d %d %08" PRIx32 " %08" PRIx32 " %u", i, (int)s,
+               bits32(loop32.vertical_approach), bits32(loop32.vertical_load), loop32.n_slots);
+        for (uint32_t k = 0; k < loop32.n_slots && k < WRC_MAX_SLOTS; k++)
+            print_slot32(&loop32.slots[k]);
+        printf("\n");
     }
 
     /* bad inputs */
@@ -207,6 +224,16 @@ int main(int argc, char **argv) {
     expect("null_input", wrc_step_f64(t64, n64, NULL, &out), WRC_ERR_NULL_POINTER);
     expect("null_output", wrc_step_f64(t64, n64, &in, NULL), WRC_ERR_NULL_POINTER);
     expect("null_size", wrc_table_bytes_f64(2, 2, 1, 2, NULL), WRC_ERR_NULL_POINTER);
+    in = input_f64(0.0);
+    wrc_step_output_f64 prev;
+    expect("cold_step", wrc_step_f64(t64, n64, &in, &prev), WRC_OK);
+    expect("null_previous", wrc_step_from_f64(t64, n64, &in, NULL, &out), WRC_ERR_NULL_POINTER);
+    prev.slots[0].load = NAN;
+    expect("nan_previous", wrc_step_from_f64(t64, n64, &in, &prev, &out), WRC_ERR_NON_FINITE);
+    prev.slots[0].load = 0.0;
+    prev.n_slots = WRC_MAX_SLOTS + 1;
+    expect("previous_other_table", wrc_step_from_f64(t64, n64, &in, &prev, &out),
+           WRC_ERR_BAD_ARGUMENT);
     wrc_step_input_f32 in32 = input_f32(0.0);
     wrc_step_output_f32 out32;
     in32.fz = -1.0f;
