@@ -19,8 +19,10 @@ use wrc_kernel::patch::{
     TractionBound,
 };
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::step::{step, StepInput};
-use wrc_kernel::table::{ContactTable, TableSpec};
+use wrc_kernel::step::{step, step_from, StepInput};
+use wrc_kernel::table::{
+    build_table, fnv1a, ContactTable, TableSlot, TableSpec, FNV_OFFSET, ROW_BUFFERS,
+};
 use wrc_kernel::wheel::{
     solve_wheel, solve_wheel_warm, DefaultWheelWorkspace, WheelConfig, WheelResult, WheelState,
 };
@@ -127,7 +129,7 @@ pub type Placed<'a, T> = WheelRail<'a, T, PROFILE_NODES, GAP_GRID>;
 pub type WheelWs<T> = DefaultWheelWorkspace<T>;
 
 /// Capacity of one case's result vector.
-pub const MAX_VALUES: usize = 160;
+pub const MAX_VALUES: usize = 256;
 
 /// How a result compares between `f32` and `f64`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -257,6 +259,7 @@ case_table!(
     wheel_flange,
     wheel_step,
     step_sweep,
+    table_build,
     rejects,
 );
 
@@ -828,6 +831,84 @@ pub fn wheel_flange<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> R
     wheel_case(m, o, 6.0, "wheel place dy=6", "wheel solve_wheel dy=6")
 }
 
+/// Slots of the on-target table build ([`table_build`]).
+pub const BUILD_SLOTS: usize = 1;
+/// Strips per slot of the on-target table build.
+pub const BUILD_STRIPS: usize = 16;
+/// Bytes reserved for the on-target table ([`table_build`]: 3 × 2 nodes, 1 × 16; ≈ 2.7 kB in f64).
+pub const BUILD_BYTES: usize = 4096;
+
+/// The contact table built on the target (issue 14: "the table built on the host and the one
+/// built on the target agree"): S1002/UIC60 as [`step_spec`] but a small grid, dy −4 … −3 mm in
+/// 3 nodes (no refinement) × 40 and 120 kN, 1 slot × 16 strips, from the firmware's profile
+/// tables, metered as one call (placement, equilibrium roll and the converged solve at each
+/// node: the cost of a table node on the target). Results: the table's size and its FNV-1a
+/// checksum in 16-bit pieces, compared with the host's build bit for bit in each precision.
+pub fn table_build<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
+    let (wheel, rail) = T::tables();
+    let spec = TableSpec {
+        dy_min: T::from_f64(-4.0),
+        dy_max: T::from_f64(-3.0),
+        n_dy: 3,
+        f_min: T::from_f64(40_000.0),
+        f_max: T::from_f64(120_000.0),
+        n_load: 2,
+        grid_step: T::from_f64(0.05),
+        equilibrium_roll: true,
+        refine_tol: T::ZERO,
+        max_dy_nodes: 3,
+    };
+    if spec.capacity_bytes(BUILD_SLOTS, BUILD_STRIPS) > BUILD_BYTES {
+        return Err(Error::OutOfRange("table_build buffer"));
+    }
+    let mut out = [0u8; BUILD_BYTES];
+    let mut rows = [TableSlot::<T, BUILD_STRIPS>::EMPTY; ROW_BUFFERS * BUILD_SLOTS * 2];
+    let mut ws = WheelWs::<T>::new();
+    let cfg = WheelConfig::recommended(
+        T::from_f64(0.3),
+        T::from_f64(STEP_SPEED),
+        T::from_f64(STEP_R0),
+    );
+    let mat = Material::<T>::steel();
+    let setup = step_setup::<T>();
+    let rep = m.call("table::build_table (3 x 2 nodes)", || {
+        build_table::<
+            T,
+            PROFILE_NODES,
+            GAP_GRID,
+            BUILD_SLOTS,
+            BUILD_STRIPS,
+            4,
+            128,
+            256,
+            4,
+            32,
+            32,
+            128,
+        >(
+            black_box(rail),
+            black_box(wheel),
+            &setup,
+            Side::Right,
+            &mat,
+            &cfg,
+            &spec,
+            &mut rows,
+            &mut ws,
+            &mut out,
+        )
+    })?;
+    let bytes = &out[..rep.bytes];
+    ContactTable::<T>::from_bytes(bytes)?;
+    o.per_precision(rep.bytes as u32);
+    o.per_precision(rep.nodes as u32);
+    let h = fnv1a(FNV_OFFSET, bytes);
+    for q in 0..4 {
+        o.per_precision(((h >> (16 * q)) & 0xffff) as u32);
+    }
+    Ok(())
+}
+
 /// The real-time step (issue 14): the contact table of [`step_spec`] read in place
 /// (`ContactTable::from_bytes`, metered: it checks the payload checksum), then
 /// `step::step` at each of the [`STEP_STATES`] states of [`step_state`], metered as one series
@@ -863,5 +944,28 @@ pub fn step_sweep<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Res
         o.count(loaded);
     }
     m.series_end("step::step");
+    // the time loop's step: one round from the previous result (here the cold step's at the
+    // same state, so the result is the cold step's second round)
+    m.series_begin();
+    for q in 0..STEP_STATES {
+        let inp = step_state::<T>(q);
+        let prev = step::<T, STEP_SLOTS, STEP_STRIPS>(&table, &inp)?;
+        let r = m.call("step::step_from", || {
+            step_from::<T, STEP_SLOTS, STEP_STRIPS>(
+                black_box(&table),
+                black_box(&inp),
+                black_box(&prev),
+            )
+        })?;
+        let (mut fx, mut fy) = (T::ZERO, T::ZERO);
+        for s in &r.slots {
+            fx += s.fx;
+            fy += s.fy;
+        }
+        let muf = (inp.mu * inp.fz).to_f64();
+        o.real(fx, muf);
+        o.real(fy, muf);
+    }
+    m.series_end("step::step_from");
     Ok(())
 }
