@@ -19,7 +19,7 @@ use wrc_kernel::patch::{
     TractionBound,
 };
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::step::{step, step_from, StepInput};
+use wrc_kernel::step::{step, step_cells, step_from, StepInput};
 use wrc_kernel::table::{
     build_table, fnv1a, ContactTable, TableSlot, TableSpec, FNV_OFFSET, ROW_BUFFERS,
 };
@@ -259,6 +259,7 @@ case_table!(
     wheel_flange,
     wheel_step,
     step_sweep,
+    step_with_cells,
     table_build,
     rejects,
 );
@@ -829,6 +830,67 @@ pub fn wheel_step<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Res
 /// [`wheel_case`] at flange contact: lateral shift 6 mm towards the wheel, yaw 7.2 mrad.
 pub fn wheel_flange<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
     wheel_case(m, o, 6.0, "wheel place dy=6", "wheel solve_wheel dy=6")
+}
+
+/// Cells per strip of [`step_with_cells`] (the converged solver's default grid).
+pub const STEP_CELLS: usize = 32;
+
+/// Sums of the cells of [`step_with_cells`]: F_x, F_y (N) and the slipping cells.
+struct CellSums<T> {
+    fx: T,
+    fy: T,
+    slip: usize,
+}
+
+impl<T: Real> CellSink<T> for CellSums<T> {
+    fn cell(&mut self, _j: usize, _i: usize, o: &CellOut<T>) {
+        self.fx += o.px * o.area;
+        self.fy += o.py * o.area;
+        if o.slip {
+            self.slip += 1;
+        }
+    }
+}
+
+/// The real-time step with per-cell fields and wear (`step::step_cells`, [`STEP_CELLS`] cells
+/// per strip, a sink that sums the cells) at every fourth state of [`step_state`] from the cold
+/// step's result (the time loop's step), metered as a series: the cost of the cells beside
+/// the forces-only [`step_sweep`]. Per state: the cells' ΣF_x, ΣF_y (relative to μF_z) and the
+/// largest strip wear depth (relative to its own size).
+pub fn step_with_cells<T: WheelProfiles, M: Meter>(
+    m: &mut M,
+    o: &mut Outs<T>,
+) -> Result<(), Error> {
+    let table = ContactTable::<T>::from_bytes(T::contact_table())?;
+    m.series_begin();
+    for q in (0..STEP_STATES).step_by(4) {
+        let inp = step_state::<T>(q);
+        let prev = step::<T, STEP_SLOTS, STEP_STRIPS>(&table, &inp)?;
+        let mut sums = CellSums {
+            fx: T::ZERO,
+            fy: T::ZERO,
+            slip: 0,
+        };
+        let (_, wear) = m.call("step::step_cells", || {
+            step_cells::<T, STEP_SLOTS, STEP_STRIPS, STEP_CELLS, _>(
+                black_box(&table),
+                black_box(&inp),
+                Some(black_box(&prev)),
+                &mut sums,
+            )
+        })?;
+        let muf = (inp.mu * inp.fz).to_f64();
+        o.real(sums.fx, muf);
+        o.real(sums.fy, muf);
+        let mut wmax = T::ZERO;
+        for w in wear.max {
+            wmax = math::max(wmax, w);
+        }
+        o.real(wmax, 0.0);
+        o.count(sums.slip);
+    }
+    m.series_end("step::step_cells");
+    Ok(())
 }
 
 /// Slots of the on-target table build ([`table_build`]).

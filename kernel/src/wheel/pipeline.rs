@@ -173,14 +173,17 @@ impl<
     }
 }
 
-/// Forwards cells with the global strip index and accumulates wear (if `WEAR`).
-struct RegionSink<'a, T, K, const SS: usize, const WEAR: bool> {
-    inner: &'a mut K,
-    wear: &'a mut StripWear<T, SS>,
-    map: &'a WearMap<T>,
-    first: usize,
-    speed: T,
-    dx: T,
+/// Forwards cells with the strip index offset by `first` and accumulates the wear of slipping
+/// cells (if `WEAR`) at strip `wear_first + j` (the per-patch pipeline and the real-time step's
+/// cells, [`crate::step::step_cells`]).
+pub(crate) struct RegionSink<'a, T, K, const SS: usize, const WEAR: bool> {
+    pub(crate) inner: &'a mut K,
+    pub(crate) wear: &'a mut StripWear<T, SS>,
+    pub(crate) map: &'a WearMap<T>,
+    pub(crate) first: usize,
+    pub(crate) wear_first: usize,
+    pub(crate) speed: T,
+    pub(crate) dx: T,
 }
 
 impl<T: Real, K: CellSink<T>, const SS: usize, const WEAR: bool> CellSink<T>
@@ -188,13 +191,18 @@ impl<T: Real, K: CellSink<T>, const SS: usize, const WEAR: bool> CellSink<T>
 {
     #[inline]
     fn cell(&mut self, j: usize, i: usize, out: &CellOut<T>) {
-        let g = self.first + j;
         if WEAR && out.slip {
             let s = math::hypot_fast(out.sx, out.sy);
-            self.wear
-                .add_cell(self.map, g, out.pn, s, self.speed, self.dx);
+            self.wear.add_cell(
+                self.map,
+                self.wear_first + j,
+                out.pn,
+                s,
+                self.speed,
+                self.dx,
+            );
         }
-        self.inner.cell(g, i, out);
+        self.inner.cell(self.first + j, i, out);
     }
 }
 
@@ -580,6 +588,7 @@ fn layout_and_tangential<
             wear: &mut ws.wear,
             map: &cfg.wear,
             first: reg.first,
+            wear_first: reg.first,
             speed: cfg.speed,
             dx: patch.dx,
         };

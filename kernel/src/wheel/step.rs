@@ -45,12 +45,16 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
 use crate::error::{check_finite, check_positive, Error};
-use crate::fastrip::strip_forces;
+use crate::fastrip::{fastrip, strip_forces, FastripSettings};
 use crate::geometry::{creepages_trig, Kinematics, PatchFrame, PoseTrig, Side, WheelsetPose};
 use crate::kalker;
+use crate::kalker::KalkerCoefficients;
 use crate::math::{self, c};
+use crate::patch::{CellSink, Flexibilities, SemiEllipticStrips, StripPatch};
 use crate::patch::{Creepage, Strip};
 use crate::table::{ContactTable, SlotField, DY_HALVINGS, NODE_FIXED, SLOT_FIXED};
+use crate::wear::{StripWear, WearMap};
+use crate::wheel::pipeline::RegionSink;
 use crate::{Material, Real};
 
 /// Fixed-point steps of the vertical balance per round.
@@ -237,7 +241,7 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
     table: &ContactTable<'_, T>,
     input: &StepInput<T>,
 ) -> Result<StepResult<T, K>, Error> {
-    evaluate::<T, K, ST>(table, input, [T::ZERO; K], COLD_ROUNDS)
+    evaluate::<T, K, ST, ()>(table, input, [T::ZERO; K], COLD_ROUNDS, &mut ())
 }
 
 /// The step of a time loop: one round of the normal–tangential coupling, with the creep-force
@@ -254,6 +258,11 @@ pub fn step_from<T: Real, const K: usize, const ST: usize>(
     input: &StepInput<T>,
     previous: &StepResult<T, K>,
 ) -> Result<StepResult<T, K>, Error> {
+    evaluate::<T, K, ST, ()>(table, input, ratios(previous)?, 1, &mut ())
+}
+
+/// The creep-force ratios r_k = F_y,k/N_k of a previous result (0 for an empty slot).
+fn ratios<T: Real, const K: usize>(previous: &StepResult<T, K>) -> Result<[T; K], Error> {
     let mut ratio = [T::ZERO; K];
     for (r, s) in ratio.iter_mut().zip(previous.slots.iter()) {
         if !(s.load >= T::ZERO) || !math::is_finite(s.load) || !math::is_finite(s.fy) {
@@ -266,15 +275,167 @@ pub fn step_from<T: Real, const K: usize, const ST: usize>(
             T::ZERO
         };
     }
-    evaluate::<T, K, ST>(table, input, ratio, 1)
+    Ok(ratio)
+}
+
+/// Wear of a step with cells ([`step_cells`]), KTH map ([`WearMap::kth`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepWear<T, const K: usize, const ST: usize> {
+    /// Wear depth per strip per passage, mm: `depth[k][j]` of slot k's strip j (0 for an empty
+    /// slot or strip).
+    pub depth: [[T; ST]; K],
+    /// Largest strip depth of each slot, mm.
+    pub max: [T; K],
+}
+
+/// The step with per-cell fields and wear: the result of [`step`] (no `previous`) or
+/// [`step_from`] (with one), the same numbers, and in its last round the cell FaStrip
+/// ([`fastrip`] with [`FastripSettings::new`], the strips' Ayasse–Chollet flexibilities) on each
+/// loaded slot's strips, on `C` cells per strip over the slot's longest strip: every contact
+/// cell goes to `sink` with strip index k·`ST` + j (slot k, strip j), and the KTH wear of the
+/// slipping cells per strip is returned. The forces stay the closed form's; those of the cells
+/// differ from them as the cell FaStrip from [`strip_forces`] (within 0.14 % of μN on Hertz
+/// patches at 400 cells per strip, more at coarse grids).
+///
+/// Its cost is the step's plus the cell FaStrip's on ST × C cells per slot (BENCHMARKS.md);
+/// fixed trip counts, but the cells do data-dependent work (slip cells).
+///
+/// Errors: as [`step`] / [`step_from`], and those of the cell FaStrip and the wear map.
+pub fn step_cells<T: Real, const K: usize, const ST: usize, const C: usize, S: CellSink<T>>(
+    table: &ContactTable<'_, T>,
+    input: &StepInput<T>,
+    previous: Option<&StepResult<T, K>>,
+    sink: &mut S,
+) -> Result<(StepResult<T, K>, StepWear<T, K, ST>), Error> {
+    let mut cells = Cells::<T, S, K, ST, C> {
+        sink,
+        map: WearMap::kth(),
+        wear: StepWear {
+            depth: [[T::ZERO; ST]; K],
+            max: [T::ZERO; K],
+        },
+    };
+    let r = match previous {
+        None => evaluate::<T, K, ST, _>(table, input, [T::ZERO; K], COLD_ROUNDS, &mut cells)?,
+        Some(p) => evaluate::<T, K, ST, _>(table, input, ratios(p)?, 1, &mut cells)?,
+    };
+    Ok((r, cells.wear))
+}
+
+/// What the last round does with a loaded slot's strips besides their closed-form forces.
+trait SlotFields<T, const ST: usize> {
+    /// Whether [`SlotFields::slot`] runs (false: the forces-only step keeps no strips).
+    const ACTIVE: bool;
+    /// Slot `k`'s loaded strips (empty ones a = 0), its load N (N), creepages, μ, material and
+    /// the rolling speed (mm/s).
+    #[allow(clippy::too_many_arguments)]
+    fn slot(
+        &mut self,
+        k: usize,
+        strips: &[Strip<T>; ST],
+        load: T,
+        cr: &Creepage<T>,
+        mu: T,
+        mat: &Material<T>,
+        speed: T,
+    ) -> Result<(), Error>;
+}
+
+/// The forces-only step.
+impl<T, const ST: usize> SlotFields<T, ST> for () {
+    const ACTIVE: bool = false;
+    fn slot(
+        &mut self,
+        _: usize,
+        _: &[Strip<T>; ST],
+        _: T,
+        _: &Creepage<T>,
+        _: T,
+        _: &Material<T>,
+        _: T,
+    ) -> Result<(), Error> {
+        Ok(())
+    }
+}
+
+/// The cell FaStrip and wear of [`step_cells`].
+struct Cells<'a, T, S, const K: usize, const ST: usize, const C: usize> {
+    sink: &'a mut S,
+    map: WearMap<T>,
+    wear: StepWear<T, K, ST>,
+}
+
+impl<T: Real, S: CellSink<T>, const K: usize, const ST: usize, const C: usize> SlotFields<T, ST>
+    for Cells<'_, T, S, K, ST, C>
+{
+    const ACTIVE: bool = true;
+    fn slot(
+        &mut self,
+        k: usize,
+        strips: &[Strip<T>; ST],
+        load: T,
+        cr: &Creepage<T>,
+        mu: T,
+        mat: &Material<T>,
+        speed: T,
+    ) -> Result<(), Error> {
+        let mut st = *strips;
+        let mut amax = T::ZERO;
+        for s in st.iter_mut() {
+            if s.a > T::ZERO {
+                amax = math::max(amax, s.a);
+                // the closed form's flexibilities (Kalker's at the strip's own ellipse), explicit
+                let b = s.a * s.sqrt_b_over_a * s.sqrt_b_over_a;
+                let kc = KalkerCoefficients {
+                    c11: s.c11,
+                    c22: s.c22,
+                    c23: s.c23,
+                    c33: s.c33,
+                };
+                s.flex = Flexibilities::kalker(s.a, b, mat.g, &kc);
+            }
+        }
+        if !(amax > T::ZERO) || k >= K {
+            return Ok(());
+        }
+        let dx = T::TWO * amax / T::from_usize(C);
+        let mut patch = StripPatch::<T, ST, C>::new(st, -amax, dx, *mat)?;
+        patch.scale_to_load(load)?;
+        let mut w = StripWear::<T, ST>::new();
+        let mut rs = RegionSink::<T, S, ST, true> {
+            inner: &mut *self.sink,
+            wear: &mut w,
+            map: &self.map,
+            first: k * ST,
+            wear_first: 0,
+            speed,
+            dx,
+        };
+        fastrip(
+            &patch,
+            &SemiEllipticStrips,
+            cr,
+            &FastripSettings::new(mu),
+            &mut rs,
+        )?;
+        for d in w.depth.iter() {
+            if !math::is_finite(*d) {
+                return Err(Error::NonFinite("wear depth"));
+            }
+        }
+        self.wear.depth[k] = w.depth;
+        self.wear.max[k] = w.max_depth(ST);
+        Ok(())
+    }
 }
 
 /// The step's computation (module docs) with the initial ratios `ratio` and `rounds` rounds.
-fn evaluate<T: Real, const K: usize, const ST: usize>(
+fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
     table: &ContactTable<'_, T>,
     input: &StepInput<T>,
     mut ratio: [T; K],
     rounds: u32,
+    fields: &mut F,
 ) -> Result<StepResult<T, K>, Error> {
     let fz = check_positive(input.fz, "fz")?;
     let mu = check_positive(input.mu, "mu")?;
@@ -315,7 +476,8 @@ fn evaluate<T: Real, const K: usize, const ST: usize>(
     let sin_yaw = trig.yaw.0;
     // 1. the shift interval (the same for every round and balance step)
     let sh = shift(table, pose.dy)?;
-    for _round in 0..rounds {
+    for round in 0..rounds {
+        let last = round + 1 == rounds;
         // 2. vertical balance
         let mut f = math::clamp(fz, f_lo, f_hi);
         for _ in 0..BALANCE_STEPS {
@@ -425,6 +587,8 @@ fn evaluate<T: Real, const K: usize, const ST: usize>(
             loaded = loaded && carried > T::ZERO && w > T::ZERO;
             let scale = if loaded { load / carried } else { T::ZERO };
             let (mut fx, mut fy, mut mz) = (T::ZERO, T::ZERO, T::ZERO);
+            // the loaded strips, for the cell fields of the last round (empty: a = 0)
+            let mut kept = [Strip::default(); ST];
             for (q, &(a, p)) in strips.iter().enumerate().take(st) {
                 let g = at(table, &c, base + 2 * st + q);
                 let kc = kalker::coefficients(T::ONE / math::max(g, math::c(1e-3)), nu)?;
@@ -451,7 +615,13 @@ fn evaluate<T: Real, const K: usize, const ST: usize>(
                     fx += sx;
                     fy += sy;
                     mz += sm;
+                    if F::ACTIVE {
+                        kept[q] = s;
+                    }
                 }
+            }
+            if F::ACTIVE && last && loaded {
+                fields.slot(k, &kept, load, &cr, mu, &mat, input.kinematics.speed)?;
             }
             if loaded {
                 slot.creepage = cr;
