@@ -16,13 +16,16 @@ fn main() {
     println!("cargo:rerun-if-changed={}", expected.display());
     let profiles = manifest.join("src").join("profiles.rs");
     println!("cargo:rerun-if-changed={}", profiles.display());
-    let tables = ["table_f32.bin", "table_f64.bin"].map(|f| manifest.join("src").join(f));
+    let tables: Vec<PathBuf> = (0..4)
+        .flat_map(|c| [format!("table_f32_{c}.bin"), format!("table_f64_{c}.bin")])
+        .map(|f| manifest.join("src").join(f))
+        .collect();
     for t in &tables {
         println!("cargo:rerun-if-changed={}", t.display());
     }
     if !expected.is_file() || !profiles.is_file() || tables.iter().any(|t| !t.is_file()) {
         panic!(
-            "{}, profiles.rs or the contact tables table_f32.bin / table_f64.bin are missing: \
+            "{}, profiles.rs or the contact tables table_f32_<c>.bin / table_f64_<c>.bin are missing: \
              generate them on the host with \
              `cargo run -p wrc-bench --release --bin firmware-expected` (as .ci/run does)",
             expected.display()

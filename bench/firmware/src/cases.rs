@@ -47,6 +47,9 @@ pub trait WheelProfiles: Real {
     /// by `firmware-expected` with `wrc_kernel::table::build_table`; on the target the
     /// generated `table_f32.bin` / `table_f64.bin` in flash).
     fn contact_table() -> &'static [u8];
+    /// The bytes of the state sweep's table `c` ([`SWEEP_TABLES`]) in precision `Self`, built
+    /// on the host as [`WheelProfiles::contact_table`] (table 0 is that table).
+    fn sweep_table(c: usize) -> &'static [u8];
 }
 
 /// Slots of the step cases' contact table (as `bench/examples/realtime_step.rs`).
@@ -259,6 +262,7 @@ case_table!(
     wheel_flange,
     wheel_step,
     step_sweep,
+    state_sweep,
     step_with_cells,
     table_build,
     rejects,
@@ -830,6 +834,118 @@ pub fn wheel_step<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Res
 /// [`wheel_case`] at flange contact: lateral shift 6 mm towards the wheel, yaw 7.2 mrad.
 pub fn wheel_flange<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
     wheel_case(m, o, 6.0, "wheel place dy=6", "wheel solve_wheel dy=6")
+}
+
+/// The tables of the state sweep ([`state_sweep`], issue 14): S1002/UIC60 at back-to-back 1353
+/// and 1360 mm, right and left wheel, each on the examples' grid (`firmware-expected`).
+pub const SWEEP_TABLES: [(f64, Side); 4] = [
+    (1353.0, Side::Right),
+    (1353.0, Side::Left),
+    (1360.0, Side::Right),
+    (1360.0, Side::Left),
+];
+/// States per table of [`state_sweep`] (1024 in all).
+pub const SWEEP_STATES: usize = 256;
+/// Distance the sweep's shifts keep from the ends of a table's range, mm.
+pub const SWEEP_MARGIN: f64 = 0.3;
+
+/// State `q` of the state sweep on a table covering the shifts `dy_lo` … `dy_hi` (mm, kernel
+/// frame): quasi-random over the range (within [`SWEEP_MARGIN`]), yaw ±10 mrad, roll ±5 mrad,
+/// F_z 20–150 kN, μ 0.1–0.5, lateral velocity ±100 mm/s and yaw rate ±0.02 rad/s on nominal
+/// rolling at 100 km/h; every fourth state rolls nominally at yaw and roll 0.
+pub fn sweep_state<T: Real>(q: usize, dy_lo: f64, dy_hi: f64) -> StepInput<T> {
+    let f = |a: f64, b: f64| {
+        let x = q as f64 * a + b;
+        x - math::floor(x)
+    };
+    let nominal = q % 4 == 3;
+    let (lo, hi) = (dy_lo + SWEEP_MARGIN, dy_hi - SWEEP_MARGIN);
+    let dy = lo + (hi - lo) * f(0.618_033_988_75, 0.1);
+    let (yaw, roll, vy, yaw_rate) = if nominal {
+        (0.0, 0.0, 0.0, 0.0)
+    } else {
+        (
+            0.01 * (2.0 * f(0.754_877_666, 0.2) - 1.0),
+            0.005 * (2.0 * f(0.281_215_7, 0.7) - 1.0),
+            100.0 * (2.0 * f(0.453_397_65, 0.4) - 1.0),
+            0.02 * (2.0 * f(0.380_364_3, 0.5) - 1.0),
+        )
+    };
+    StepInput {
+        pose: WheelsetPose {
+            dy: T::from_f64(dy),
+            yaw: T::from_f64(yaw),
+            roll: T::from_f64(roll),
+        },
+        fz: T::from_f64(20_000.0 + 130_000.0 * f(0.569_840_29, 0.3)),
+        kinematics: Kinematics {
+            lateral_velocity: T::from_f64(vy),
+            yaw_rate: T::from_f64(yaw_rate),
+            ..Kinematics::nominal(T::from_f64(STEP_SPEED), T::from_f64(STEP_R0))
+        },
+        mu: T::from_f64(0.1 + 0.4 * f(0.324_717_957, 0.6)),
+    }
+}
+
+/// The state sweep (issue 14: "CI runs the QEMU state sweep and fails when any state exceeds
+/// the budget"): [`SWEEP_STATES`] states of [`sweep_state`] on each of the [`SWEEP_TABLES`] in
+/// flash, the cold step (`step::step`) and the time loop's step (`step::step_from` from the cold
+/// step's result at the same state), each metered as one series over all 1024 states (median,
+/// maximum, the worst state). Per table and step: the FNV-1a hash of every result's bits
+/// (compared exactly with the host in each precision), the mean |F|/(μF_z) (f32 against f64) and
+/// the loaded slots.
+pub fn state_sweep<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
+    for warm in [false, true] {
+        m.series_begin();
+        for c in 0..SWEEP_TABLES.len() {
+            let table = ContactTable::<T>::from_bytes(T::sweep_table(c))?;
+            let (lo, hi) = (table.header.dy_min, table.header.dy_max);
+            let mut hash = FNV_OFFSET;
+            let (mut mean, mut loaded) = (0.0f64, 0usize);
+            for q in 0..SWEEP_STATES {
+                let inp = sweep_state::<T>(q, lo, hi);
+                let r = if warm {
+                    let prev = step::<T, STEP_SLOTS, STEP_STRIPS>(&table, &inp)?;
+                    m.call("sweep::step_from", || {
+                        step_from::<T, STEP_SLOTS, STEP_STRIPS>(
+                            black_box(&table),
+                            black_box(&inp),
+                            black_box(&prev),
+                        )
+                    })?
+                } else {
+                    m.call("sweep::step", || {
+                        step::<T, STEP_SLOTS, STEP_STRIPS>(black_box(&table), black_box(&inp))
+                    })?
+                };
+                let (mut fx, mut fy) = (T::ZERO, T::ZERO);
+                let mut b = [0u8; 8];
+                for s in &r.slots {
+                    fx += s.fx;
+                    fy += s.fy;
+                    if s.load > T::ZERO {
+                        loaded += 1;
+                    }
+                    for v in [s.load, s.fx, s.fy, s.mz, s.pmax, s.area] {
+                        v.write_le(&mut b);
+                        hash = fnv1a(hash, &b[..T::BYTES]);
+                    }
+                }
+                mean += math::hypot(fx, fy).to_f64() / (inp.mu * inp.fz).to_f64();
+            }
+            for k in 0..4 {
+                o.per_precision(((hash >> (16 * k)) & 0xffff) as u32);
+            }
+            o.real(T::from_f64(mean / SWEEP_STATES as f64), 1e-3);
+            o.per_precision(loaded as u32);
+        }
+        m.series_end(if warm {
+            "sweep::step_from"
+        } else {
+            "sweep::step"
+        });
+    }
+    Ok(())
 }
 
 /// Cells per strip of [`step_with_cells`] (the converged solver's default grid).

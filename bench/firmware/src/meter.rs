@@ -134,8 +134,8 @@ pub struct Sample {
     pub stack: Option<usize>,
 }
 
-/// Calls a series can summarise.
-const SERIES_CAP: usize = 64;
+/// Calls a series can summarise (the state sweep's 1024 and more).
+const SERIES_CAP: usize = 1100;
 
 /// The instruction counts of a running series.
 struct Series {
@@ -227,13 +227,6 @@ impl Meter for TargetMeter {
                 _ => None,
             };
             ser.code = code;
-            hprintln!(
-                "  state {} {} #{}: {} instructions",
-                self.prefix,
-                label,
-                ser.n - 1,
-                s.instructions
-            );
             return r;
         }
         match s.stack {
@@ -281,6 +274,13 @@ impl Meter for TargetMeter {
             return;
         }
         let v = &mut ser.instructions[..n];
+        // the worst call (first of equals), before sorting
+        let mut worst = 0;
+        for (q, x) in v.iter().enumerate() {
+            if *x > v[worst] {
+                worst = q;
+            }
+        }
         v.sort_unstable();
         // the upper median for an even count, as the host example
         let (median, max) = (v[n / 2], v[n - 1]);
@@ -295,7 +295,7 @@ impl Meter for TargetMeter {
             ser.code
         );
         hprintln!(
-            "  series {} {}: {} calls, median {} / min {} / max {} instructions, max/median {}.{:03}",
+            "  series {} {}: {} calls, median {} / min {} / max {} instructions, max/median {}.{:03}, worst call #{}",
             self.prefix,
             label,
             n,
@@ -303,7 +303,8 @@ impl Meter for TargetMeter {
             v[0],
             max,
             max / median.max(1),
-            (max % median.max(1)) * 1000 / median.max(1)
+            (max % median.max(1)) * 1000 / median.max(1),
+            worst
         );
     }
 }

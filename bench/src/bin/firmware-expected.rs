@@ -2,10 +2,11 @@
 //! `f32` and `f64`, bit-exact (`from_bits`), for the QEMU firmware to compare against; and
 //! `bench/firmware/src/profiles.rs`: the S1002 wheel and UIC60 rail tables (host preprocessing of
 //! `data/profiles/`) as const data in both precisions, bit-exact copies of the tables the
-//! host used for the wheel cases; and `table_f32.bin` / `table_f64.bin` beside them: the contact
-//! table of the step cases (`cases::step_spec`, S1002/UIC60 1353 mm right wheel, as
-//! `examples/realtime_step.rs`) built with `wrc_kernel::table::build_table`, which the firmware
-//! embeds with `include_bytes!` and reads in place.
+//! host used for the wheel cases; and `table_f32_<c>.bin` / `table_f64_<c>.bin` beside them: the
+//! contact tables of the step cases (`cases::step_spec`, S1002/UIC60 at 1353 and 1360 mm, right
+//! and left wheel, `cases::SWEEP_TABLES`; the first as `examples/realtime_step.rs`) built with
+//! `wrc_kernel::table::build_table`, which the firmware embeds with `include_bytes!` and reads in
+//! place.
 //!
 //! Usage: `cargo run -p wrc-bench --release --bin firmware-expected [OUTPUT]` (default output:
 //! `bench/firmware/src/expected.rs`; `profiles.rs` goes beside it). `.ci/run` runs it before the
@@ -21,7 +22,7 @@ mod cases;
 
 use cases::{NoMeter, Outs, WheelProfiles, NAMES, N_CASES, PROFILE_NODES, STEP_SLOTS, STEP_STRIPS};
 use std::sync::OnceLock;
-use wrc_kernel::geometry::Side;
+use wrc_kernel::geometry::TrackSetup;
 use wrc_kernel::profile::ProfileTable;
 use wrc_kernel::table::{build_table, narrow_to_f32, TableSlot, ROW_BUFFERS};
 use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
@@ -56,24 +57,27 @@ fn pair<T: wrc_kernel::Real>() -> Pair<T> {
     (shrink(&w), shrink(&r))
 }
 
-/// The step cases' contact table in precision `T`, built as `examples/realtime_step.rs` builds it
-/// (full-capacity host profile tables, the solver's recommended configuration at μ 0.3).
-fn contact_table<T: wrc_kernel::Real>() -> &'static [u8] {
-    let (w, r) = wrc_bench::tables::<T>();
-    let spec = cases::step_spec::<T>();
+/// The state sweep's contact table `c` (`cases::SWEEP_TABLES`: back-to-back and side) in f64,
+/// built as `examples/realtime_step.rs` builds its table (full-capacity host profile tables, the
+/// solver's recommended configuration at μ 0.3, the examples' grid `cases::step_spec`).
+fn sweep_table_f64(c: usize) -> &'static [u8] {
+    let (w, r) = wrc_bench::tables::<f64>();
+    let spec = cases::step_spec::<f64>();
+    let (b2b, side) = cases::SWEEP_TABLES[c];
+    let setup = TrackSetup {
+        back_to_back: b2b,
+        ..TrackSetup::standard()
+    };
     let mut out = vec![0u8; spec.capacity_bytes(STEP_SLOTS, STEP_STRIPS)];
-    let mut rows = vec![TableSlot::<T, STEP_STRIPS>::EMPTY; ROW_BUFFERS * STEP_SLOTS * spec.n_load];
-    let mut ws = Box::new(DefaultWheelWorkspace::<T>::new());
-    let cfg = WheelConfig::recommended(
-        T::from_f64(0.3),
-        T::from_f64(cases::STEP_SPEED),
-        T::from_f64(cases::STEP_R0),
-    );
-    let rep = build_table::<T, 2048, 2048, STEP_SLOTS, STEP_STRIPS, 4, 128, 256, 4, 32, 32, 128>(
+    let mut rows =
+        vec![TableSlot::<f64, STEP_STRIPS>::EMPTY; ROW_BUFFERS * STEP_SLOTS * spec.n_load];
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let cfg = WheelConfig::recommended(0.3, cases::STEP_SPEED, cases::STEP_R0);
+    let rep = build_table::<f64, 2048, 2048, STEP_SLOTS, STEP_STRIPS, 4, 128, 256, 4, 32, 32, 128>(
         &r,
         &w,
-        &cases::step_setup::<T>(),
-        Side::Right,
+        &setup,
+        side,
         &Material::steel(),
         &cfg,
         &spec,
@@ -84,15 +88,24 @@ fn contact_table<T: wrc_kernel::Real>() -> &'static [u8] {
     .expect("contact table build");
     out.truncate(rep.bytes);
     println!(
-        "contact table f{}: {} shift nodes, {} nodes solved ({} not converged, {} slots used), {} bytes",
-        8 * T::BYTES,
-        rep.dy_nodes,
-        rep.nodes,
-        rep.not_converged,
-        rep.slots_used,
-        rep.bytes
+        "contact table {c} ({b2b} mm, {side:?}) f64: {} shift nodes, {} nodes solved ({} not converged, {} slots used), {} bytes",
+        rep.dy_nodes, rep.nodes, rep.not_converged, rep.slots_used, rep.bytes
     );
     out.leak()
+}
+
+/// The f64 tables of the state sweep, built once (in parallel: the 1360 mm ones take longest).
+fn sweep_tables_f64() -> &'static [&'static [u8]; 4] {
+    static B: OnceLock<[&'static [u8]; 4]> = OnceLock::new();
+    B.get_or_init(|| {
+        std::thread::scope(|s| {
+            let h: Vec<_> = (0..4)
+                .map(|c| s.spawn(move || sweep_table_f64(c)))
+                .collect();
+            let v: Vec<&'static [u8]> = h.into_iter().map(|h| h.join().expect("build")).collect();
+            [v[0], v[1], v[2], v[3]]
+        })
+    })
 }
 
 impl WheelProfiles for f32 {
@@ -104,15 +117,18 @@ impl WheelProfiles for f32 {
     /// f32 build's own solve differed from the f64 one by up to 1.07e-4 of μF_z in the step's
     /// ΣF_x on the refined grid (dy −3.53 mm), above the firmware's 1e-4 f32-vs-f64 limit.
     fn contact_table() -> &'static [u8] {
-        static B: OnceLock<&'static [u8]> = OnceLock::new();
+        Self::sweep_table(0)
+    }
+    fn sweep_table(c: usize) -> &'static [u8] {
+        static B: OnceLock<[&'static [u8]; 4]> = OnceLock::new();
         B.get_or_init(|| {
-            let src = <f64 as WheelProfiles>::contact_table();
-            let mut out = vec![0u8; src.len()];
-            let n = narrow_to_f32(src, &mut out).expect("f32 copy of the f64 table");
-            out.truncate(n);
-            println!("contact table f32: the f64 table rounded, {n} bytes");
-            out.leak()
-        })
+            sweep_tables_f64().map(|src| {
+                let mut out = vec![0u8; src.len()];
+                let n = narrow_to_f32(src, &mut out).expect("f32 copy of the f64 table");
+                out.truncate(n);
+                &*out.leak()
+            })
+        })[c]
     }
 }
 
@@ -122,8 +138,10 @@ impl WheelProfiles for f64 {
         *P.get_or_init(pair::<f64>)
     }
     fn contact_table() -> &'static [u8] {
-        static B: OnceLock<&'static [u8]> = OnceLock::new();
-        B.get_or_init(contact_table::<f64>)
+        Self::sweep_table(0)
+    }
+    fn sweep_table(c: usize) -> &'static [u8] {
+        sweep_tables_f64()[c]
     }
 }
 
@@ -260,13 +278,15 @@ fn main() {
     std::fs::write(&out, s).unwrap_or_else(|e| panic!("writing {}: {e}", out.display()));
     println!("wrote {} ({} cases)", out.display(), N_CASES);
     write_profiles(&out.with_file_name("profiles.rs"));
-    for (name, bytes) in [
-        ("table_f32.bin", f32::contact_table()),
-        ("table_f64.bin", f64::contact_table()),
-    ] {
-        let p = out.with_file_name(name);
-        std::fs::write(&p, bytes).unwrap_or_else(|e| panic!("writing {}: {e}", p.display()));
-        println!("wrote {} ({} bytes)", p.display(), bytes.len());
+    for c in 0..cases::SWEEP_TABLES.len() {
+        for (name, bytes) in [
+            (format!("table_f32_{c}.bin"), f32::sweep_table(c)),
+            (format!("table_f64_{c}.bin"), f64::sweep_table(c)),
+        ] {
+            let p = out.with_file_name(name);
+            std::fs::write(&p, bytes).unwrap_or_else(|e| panic!("writing {}: {e}", p.display()));
+            println!("wrote {} ({} bytes)", p.display(), bytes.len());
+        }
     }
     // The firmware's f32-against-host-f64 check, run here first: a case that fails it on the
     // host would fail on every board.
