@@ -771,8 +771,11 @@ impl<T: Real> DirectionField<T> {
     /// [`Self::rate`] and the derivative with respect to α of its relaxation term
     /// −a (w × u)/(μ p̂ D) alone, −a (w · u)/(μ p̂ D) (the stiff part, for the linearly implicit
     /// step; the anisotropy term stays explicit).
+    ///
+    /// Third: the derivative with respect to θ, at fixed u, of the relaxation term,
+    /// a φ a sin θ u_x/(μ p̂ D) (the rigid slip turns along the strip: ∂w_y/∂θ = φ a sin θ).
     #[inline]
-    fn rate_and_slope(&self, cos: T, sin: T, u: (T, T)) -> (T, T) {
+    fn rate_and_slope(&self, cos: T, sin: T, u: (T, T)) -> (T, T, T) {
         let (ux, uy) = u;
         let d = self.l1 * uy * uy + self.l2 * ux * ux;
         let wy = self.eta + self.phi * (self.xc - self.a * cos);
@@ -781,7 +784,12 @@ impl<T: Real> DirectionField<T> {
         // one division: 1/(sin θ D)
         let inv = T::ONE / (sin * d);
         let r = (cos * self.dl * ux * uy - self.a_mp * cross * sin) * inv;
-        (r, -self.a_mp * dot * sin * inv)
+        let s2 = sin * sin * inv;
+        (
+            r,
+            -self.a_mp * dot * sin * inv,
+            self.a_mp * self.phi * self.a * ux * s2,
+        )
     }
 }
 
@@ -810,24 +818,35 @@ fn step_down<T: Real>(cs: (T, T), h: (T, T)) -> (T, T) {
     (cs.0 * h.0 + cs.1 * h.1, cs.1 * h.0 - cs.0 * h.1)
 }
 
-/// One step of the direction from θ (cos/sin `a`) through the midpoint (`mid`) down by h: a
-/// two-stage Rosenbrock-W method in the marching variable −θ, with the Jacobian J of the
-/// relaxation term only, scaled by a weight w ∈ [0, 1] (A = w J):
-/// W k₁ = g(u), W k₂ = g(u + (h/2) k₁) − γ h A k₁, u ← u + h k₂, W = 1 − γ h A.
-/// It is second order for any A (the W-method conditions b₁ + b₂ = 1, b₂ α = ½,
-/// b₂ γ₂₁ = −γ), the explicit midpoint rule at A = 0, and L-stable at A = J with
-/// γ = 1 + 1/√2 (R(∞) = 1 + (½ − 2γ)/γ² = 0), as ROS2. w rises smoothly with the stiffness
-/// z = γ h J from 0 at z = 1 to 1 at z = 2: continuous in the state, and one rate and slope,
-/// one rate and two rotations per step whatever z is (constant cost). The relaxation towards the
-/// rigid slip's direction is stiff where a|w|/(μ p̂ L) ≫ 1/h (large creepage on a lightly loaded
-/// strip): an explicit step oscillates there and the slip zone's resultant fell to 0.77 μN
-/// (S1002/UIC60, dy −4.15 mm, ψ = 9.6 mrad, 28 kN). Where it is mild the explicit midpoint rule
-/// is the more accurate at these step sizes: ROS2 (or Heun's rule, the W-form of ROS2 at A = 0)
-/// there put the resultant's direction in flange contact (nearly full slip with spin, z ≈ 1)
-/// about 1° off the cell FaStrip's, 2.3 % of μF_z (Heun's: 1.6 %).
+/// One step of the traction direction from θ (cos/sin `a`) through the midpoint (`mid`) down
+/// by h: a two-stage Rosenbrock-W method in the marching variable s = −θ for
+/// dα/ds = g(s, α) = −rate,
+/// W k₁ = g + γ h A_s, W k₂ = g(s + h/2, α + (h/2) k₁) − γ h A k₁, α ← α + h k₂,
+/// W = 1 − γ h A, with A = w J (J the Jacobian of the relaxation term) and A_s = w ∂g/∂s (of the
+/// relaxation term: the rigid slip turns along the strip).
 ///
-/// Returns (the stage direction u + (h/2) k₁, the step's result). With `w_scale` = 0 the
-/// weight is 0 and the stage is the explicit Euler step of h/2 from `a`.
+/// * Order: second for any A and A_s (the W-method conditions b₁ + b₂ = 1, b₂ α = ½,
+///   b₂ γ₂₁ = −γ; with b₁ = 0 and no s-term in the second stage the s-derivative enters no
+///   order condition). At w = 0 it is the explicit midpoint rule.
+/// * Stiffness: at w = 1 it is L-stable with γ = 1 + 1/√2 (R(∞) = 1 + (½ − 2γ)/γ² = 0), as
+///   ROS2, and, with the s-derivative term of weight γ, it follows a moving equilibrium
+///   exactly to first order in its speed (for α' = λ(α − α_eq(s)), λh → −∞:
+///   α₁ − α_eq(s + h) = O(h² α_eq'')). Without that term it lagged the rigid slip's direction as
+///   it turns along the strip, which put the lateral force of flange-contact patches (large ξ
+///   with spin: ξ ≈ −5e-3 … −4e-2, φ ≈ 5e-4 … 2e-3 1/mm, S1002/UIC60 1353 mm, dy −8.5 …
+///   −11.5 mm) 4.6–13 % of μN off the cell FaStrip.
+/// * w rises smoothly with the stiffness z = γ h J from 0 at z = 1 to 1 at z = 2 (continuous in
+///   the state; one rate and slope, one rate and two rotations per step whatever z is). The
+///   relaxation towards the rigid slip's direction is stiff where a|w|/(μ p̂ L) ≫ 1/h (large
+///   creepage on a lightly loaded strip): an explicit step oscillates there (the slip zone's
+///   resultant fell to 0.77 μN at S1002/UIC60, dy −4.15 mm, ψ = 9.6 mrad, 28 kN). Where it is
+///   mild the explicit midpoint rule is the more accurate at these step sizes: ROS2 (or Heun's
+///   rule, the W-form of ROS2 at A = 0) there put the resultant's direction in flange contact
+///   (nearly full slip with spin, z ≈ 1) about 1° off the cell FaStrip's, 2.3 % of μF_z (Heun's:
+///   1.6 %).
+///
+/// Returns (the stage direction, the step's result). With `w_scale` = 0 the weight is 0 and the
+/// stage is the explicit Euler step of h/2 from `a`.
 #[inline]
 fn ros2<T: Real>(
     f: &DirectionField<T>,
@@ -838,14 +857,15 @@ fn ros2<T: Real>(
     w_scale: T,
 ) -> ((T, T), (T, T)) {
     let gamma = c::<T>(1.0 + core::f64::consts::FRAC_1_SQRT_2);
-    let (r, dr) = f.rate_and_slope(a.0, a.1, u);
-    // z = γ h dr = −γ h J (g = −r, J = −dr); an unstable direction (z < 0) is explicit
+    let (r, dr, dt) = f.rate_and_slope(a.0, a.1, u);
+    // z = γ h dr = −γ h J (g = −r, J = −dr, ∂g/∂s = ∂r/∂θ = dt); an unstable direction
+    // (z < 0) is explicit
     let z = gamma * h * dr;
     let wgt = math::clamp(z - T::ONE, T::ZERO, T::ONE);
     let wgt = w_scale * wgt * wgt * (c::<T>(3.0) - T::TWO * wgt);
     let wz = wgt * z; // −γ h A
     let inv_den = T::ONE / math::max(T::ONE + wz, T::ONE);
-    let k1 = -r * inv_den;
+    let k1 = (wgt * gamma * h * dt - r) * inv_den;
     let stage = turn(u, h * T::HALF * k1);
     let k2 = (-f.rate(mid.0, mid.1, stage) + wz * k1) * inv_den;
     (stage, turn(u, h * k2))
@@ -1003,7 +1023,7 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 ///   where it is stiff, continuously in between (rotations in the Cayley form: no
 ///   trigonometric call); where FASTSIM already slips above the slip zone, the direction is
 ///   carried down to it in [`UPSTREAM_STEPS`] step (0.67 → 0.79 % of μN at pure spin against
-///   two steps, the sweep's errors unchanged, 4.5 % fewer instructions);
+///   two steps before the s-derivative term, 0.76 % with it, the sweep's errors unchanged, 4.5 % fewer instructions);
 /// * a strip whose adhesion traction exceeds its semi-ellipse bound (`BoundCheck::Strip`, exact
 ///   here: |(κd q, λ'd q + φ*)| ≤ 1 for q = (S₁ − S₂)/(d S₁), convex in q, checked at the
 ///   leading edge q = (1 − √(1 − t))/d) carries FASTSIM's tractions, as in [`fastrip`]: p^F in
@@ -1015,7 +1035,7 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 /// carried, the adhesion and the onset's direction and selects (the real-time step's constant
 /// cost, [`crate::step`]). Against [`fastrip`] on a 6 × 4 mm Hertz
 /// patch with 400 cells per strip (host-tests `realtime_step`): within 0.14 % of μN up to
-/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.79 % at pure spin φ = 1e-3 1/mm (the cell
+/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.76 % at pure spin φ = 1e-3 1/mm (the cell
 /// FaStrip is grid-converged there: FASTSIM re-adheres inside its slip zone under spin, which
 /// this direction field does not follow; following it, a free march in closed form until |p|
 /// reaches μ p_n again, brought this to 0.35 % at 4 % more instructions per step, with no change
@@ -1023,7 +1043,10 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 /// slip, stiffness z = γhJ ≈ 1) the resultant's direction was about 1° off the cell FaStrip's
 /// (up to 2.3 % of μN of the patch) with full ROS2 from z = 1 and 1.6 % with Heun's rule below
 /// z = 1; with the explicit midpoint rule below z = 1 it is within the table's own error there
-/// (S1002/UIC60 sweep: force maximum 1.4 % of μF_z). Before this direction pass the slip zone
+/// (S1002/UIC60 sweep: force maximum 1.4 % of μF_z). Deeper in flange contact (ξ down to −4.4e-2,
+/// φ up to 1.9e-3 1/mm) the closed form is within 0.3–1.3 % of μN of the cell FaStrip on the
+/// converged solver's strips (host-tests `realtime_cells`), with the Rosenbrock step's
+/// s-derivative term (module-private `ros2`); without it 4.6–13 %. Before this direction pass the slip zone
 /// took the strip theory's slip direction blended into the rigid slip's, 7.9 % of μN off at
 /// φ = 1e-3 and 4.3 % of μF_z in flange contact.
 ///
