@@ -300,7 +300,7 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
         );
     }
     // capacity below the table's
-    assert!(step::<f64, 2, ST>(&t, &input(0.0, 83_300.0, pose)).is_err());
+    assert!(step::<f64, 0, ST>(&t, &input(0.0, 83_300.0, pose)).is_err());
     // deterministic
     let a = step::<f64, K, ST>(
         &t,

@@ -41,7 +41,8 @@
 //! [`HEADER_BYTES`] bytes, then the `n_dy` shift nodes (mm, `T`, strictly increasing, the first
 //! = dy_min and the last = dy_max of the header), then the payload of `T` values, little-endian,
 //! node-major (dy outer, load inner), each node [`NODE_FIXED`] values then `K` slots of
-//! [`SLOT_FIXED`] + 3·`ST` values.
+//! [`SLOT_FIXED`] + 3·`ST` values. `K` is the number of slots the profile pair used
+//! ([`BuildReport::slots_used`]), not the build's capacity: unused slots are not stored.
 //! Header fields, little-endian at fixed offsets: magic `b"WRCTABLE"` (0), version u32 (8),
 //! bytes per value u32 (12: 4 = f32, 8 = f64), n_dy u32 (16: shift nodes, the length of the node
 //! array), n_load u32 (20), slots K u32 (24), strips ST u32 (28), side u32 (32: 0 left, 1 right),
@@ -702,12 +703,27 @@ pub fn build_table<
             cand_ok = false;
         }
     }
-    let total = table_bytes::<T>(n, nl, K, ST);
     let body = HEADER_BYTES + n * T::BYTES;
     out.copy_within(rows_at..rows_at + n * nl * node_bytes, body);
     // Slots that were empty at the start of the table (a patch appearing at a later shift) got
     // no frame in their first rows: copy it back from the first row where the slot exists.
-    backfill_frames::<T, K, ST>(&mut out[body..total], n, nl, node_bytes)?;
+    backfill_frames::<T, K, ST>(
+        &mut out[body..body + n * nl * node_bytes],
+        n,
+        nl,
+        node_bytes,
+    )?;
+    // Only the slots used are stored (slots are taken lowest first, so they are 0 … used − 1):
+    // every node is moved down to its compact place (never behind its source).
+    let used = rep.slots_used.clamp(1, K);
+    let compact = (NODE_FIXED + used * (SLOT_FIXED + 3 * ST)) * T::BYTES;
+    for q in 1..n * nl {
+        out.copy_within(
+            body + q * node_bytes..body + q * node_bytes + compact,
+            body + q * compact,
+        );
+    }
+    let total = table_bytes::<T>(n, nl, used, ST);
     let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..total]);
     let hdr = &mut out[..HEADER_BYTES];
     hdr.fill(0);
@@ -717,7 +733,7 @@ pub fn build_table<
     put32(12, T::BYTES as u32);
     put32(16, n as u32);
     put32(20, nl as u32);
-    put32(24, K as u32);
+    put32(24, used as u32);
     put32(28, ST as u32);
     put32(32, matches!(side, Side::Right) as u32);
     put32(36, spec.equilibrium_roll as u32);
