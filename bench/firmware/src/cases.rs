@@ -59,21 +59,21 @@ pub const STEP_SPEED: f64 = 100.0 / 3.6 * 1000.0;
 pub const STEP_R0: f64 = 460.0;
 
 /// The grid of the step cases' contact table, as `bench/examples/realtime_step.rs` and
-/// `host-tests/tests/realtime_step.rs` (`wrc_host_tests::realtime::standard_spec`): dy −8…4 mm
-/// every 0.25 mm refined to 1 % (at most 71 shift nodes) × 15–260 kN in 5 log-spaced loads,
-/// 0.05 mm gap grid, equilibrium roll.
+/// `host-tests/tests/realtime_step.rs` (`wrc_host_tests::realtime::standard_spec`): dy
+/// −11.8…11.8 mm (both flanges and 2 mm) every 0.5 mm refined to 1 % (at most 190 shift nodes)
+/// × 15–260 kN in 5 log-spaced loads, 0.05 mm gap grid, equilibrium roll.
 pub fn step_spec<T: Real>() -> TableSpec<T> {
     TableSpec {
-        dy_min: T::from_f64(-8.0),
-        dy_max: T::from_f64(4.0),
-        n_dy: 49,
+        dy_min: T::from_f64(-11.8),
+        dy_max: T::from_f64(11.8),
+        n_dy: 48,
         f_min: T::from_f64(15_000.0),
         f_max: T::from_f64(260_000.0),
         n_load: 5,
         grid_step: T::from_f64(0.05),
         equilibrium_roll: true,
         refine_tol: T::from_f64(0.01),
-        max_dy_nodes: 71,
+        max_dy_nodes: 190,
     }
 }
 
