@@ -121,7 +121,7 @@ struct Shift<T> {
 /// (dy, θ) is the root of h(d) = d − dy − c₁(d) Δθ − c₂(d) Δθ², Δθ = θ − θ(d), c₁, c₂ the
 /// node's equivalent shift per roll (at the load nodes around `fz`, linear in ln F), θ(d) its
 /// roll; h is searched at the nodes, linear between them. A pose at the table's roll is located
-/// at its dy.
+/// at its dy. Both dy and the root must lie inside the table.
 fn shift<T: Real>(
     t: &ContactTable<'_, T>,
     pose: &WheelsetPose<T>,
@@ -146,8 +146,10 @@ fn shift<T: Real>(
         let d = pose.roll - t.value(i, 0, roll_v);
         t.dy_node(i) - pose.dy - d * (c1 + c2 * d)
     };
+    // the shift itself and its equivalent at the table's roll both inside the table
     let (h0, h1) = (hd(0), hd(n - 1));
-    if !(h0 <= T::ZERO && h1 >= T::ZERO) {
+    let inside = pose.dy >= t.dy_node(0) && pose.dy <= t.dy_node(n - 1);
+    if !(inside && h0 <= T::ZERO && h1 >= T::ZERO) {
         return Err(Error::OutOfRange("lateral shift outside the contact table"));
     }
     // invariant: h(lo) ≤ 0, and h(hi) > 0 or hi = n − 1; lo < hi
