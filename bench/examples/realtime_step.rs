@@ -1,9 +1,9 @@
 //! The real-time step (`wrc_kernel::step`) on an S1002/UIC60 contact table (1353 mm, right wheel,
-//! equilibrium roll, dy −8…4 mm in 0.25 mm × 15–260 kN in 5 log-spaced loads, 3 slots × 16
-//! strips), f64 and f32: table build time and size, and host time per step over 1000 states
-//! (dy over the table, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, nominal rolling at 100 km/h plus a
-//! lateral velocity and yaw rate): median / P99 / max over the states of each state's fastest of
-//! 20 timed calls (the host is shared; the step does the same work every call).
+//! equilibrium roll, dy −11.8…11.8 mm every 0.5 mm refined to 1 % × 15–260 kN in 5 log-spaced
+//! loads, 1 slot (of 3) × 16 strips), f64 and f32: table build time and size, and host time per
+//! step over 1000 states (dy −7.9…3.9 mm, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, nominal rolling
+//! at 100 km/h plus a lateral velocity and yaw rate): median / P99 / max over the states of each
+//! state's fastest of 20 timed calls (the host is shared; the step does the same work every call).
 //!
 //! Run: `cargo run --release -p wrc-bench --example realtime_step`. For instruction counts:
 //! `valgrind --tool=callgrind --toggle-collect='*one_step*' target/release/examples/realtime_step`

@@ -284,22 +284,24 @@ pub struct TableArgs {
     /// spans them).
     #[command(flatten)]
     pub wr: WheelRail,
-    /// Lowest lateral shift, mm, towards the analysed wheel (as `solve --dy`).
-    #[arg(long = "dy-from", default_value_t = -4.0, allow_hyphen_values = true)]
-    pub dy_from: f64,
-    /// Highest lateral shift, mm.
-    #[arg(long = "dy-to", default_value_t = 8.0, allow_hyphen_values = true)]
-    pub dy_to: f64,
+    /// Lowest lateral shift, mm, towards the analysed wheel (as `solve --dy`; default: the
+    /// other wheel's flange contact, found from the profiles, and 2 mm more).
+    #[arg(long = "dy-from", allow_hyphen_values = true)]
+    pub dy_from: Option<f64>,
+    /// Highest lateral shift, mm (default: this wheel's flange contact and 2 mm more).
+    #[arg(long = "dy-to", allow_hyphen_values = true)]
+    pub dy_to: Option<f64>,
     /// Shift step between the coarse table nodes, mm (refined by --refine-tol).
-    #[arg(long = "dy-step", default_value_t = 0.25)]
+    #[arg(long = "dy-step", default_value_t = 0.5)]
     pub dy_step: f64,
     /// Refinement tolerance of the shift grid: an interval is bisected while its midpoint's
-    /// pmax, area (relative) or load share (absolute) differs from the interpolation by more
-    /// than this (0: the coarse grid only).
+    /// pmax, area (relative), load share (absolute) or the creep force its frame gives
+    /// (relative to μF, μ = 0.3) differs from the interpolation by more than this (0: the
+    /// coarse grid only).
     #[arg(long = "refine-tol", default_value_t = 0.01)]
     pub refine_tol: f64,
     /// Most shift nodes after refinement (the coarse nodes are always kept).
-    #[arg(long = "max-dy-nodes", default_value_t = 71)]
+    #[arg(long = "max-dy-nodes", default_value_t = 190)]
     pub max_dy_nodes: usize,
     /// Lowest vertical load of the table, N.
     #[arg(long = "fz-min", default_value_t = 15_000.0)]

@@ -51,25 +51,74 @@ fn kernel_range(side: Side, from: f64, to: f64) -> (f64, f64) {
     }
 }
 
+/// Margin of the default shift range beyond the flange contacts, mm.
+const FLANGE_MARGIN: f64 = 2.0;
+
+/// The shift (towards the analysed wheel, mm) of this wheel's flange contact: the largest
+/// contact angle of the rigid contact point at yaw 0 and roll 0 (with `--equilibrium-roll`: the
+/// two-wheel equilibrium roll), scanned in 0.1 mm steps from 0 to 25 mm (stopping at the first
+/// shift the profiles do not describe or 0.2 rad past the largest).
+fn flange_shift(a: &TableArgs) -> Result<f64, String> {
+    let wheel = profile_table::<f64>(a.wr.wheel.as_deref(), ProfileKind::Wheel)?;
+    let rail = profile_table::<f64>(a.wr.rail.as_deref(), ProfileKind::Rail)?;
+    let side = side_of(a.wr.side);
+    let setup = setup::<f64>(&a.wr, 1360.0);
+    let mut geom =
+        wrc_kernel::geometry::WheelRail::<f64, NODES, NODES>::unplaced(&rail, &wheel, &setup);
+    let (mut best, mut at) = (f64::MIN, None);
+    for q in 0..=250 {
+        let s = 0.1 * q as f64;
+        let mut pose = WheelsetPose::towards_wheel(side, s, 0.0, 0.0);
+        if a.equilibrium_roll {
+            match wrc_kernel::geometry::equilibrium_roll::<f64, NODES, NODES>(
+                &rail, &wheel, &setup, pose.dy, 0.0, 0.05,
+            ) {
+                Ok(e) => pose.roll = e.roll,
+                Err(_) => break,
+            }
+        }
+        if geom
+            .place_in(&rail, &wheel, &setup, &pose, side, 0.05)
+            .is_err()
+        {
+            break;
+        }
+        let angle = geom.rail.at(geom.rail_t_at(geom.y_rigid)).angle;
+        if angle > best {
+            (best, at) = (angle, Some(s));
+        } else if angle < best - 0.2 {
+            break;
+        }
+    }
+    at.ok_or_else(|| "no contact at shift 0: give --dy-from and --dy-to".to_string())
+}
+
 /// `wrc table`: builds the table, writes it to `--out` and prints a summary.
 pub fn build(a: &TableArgs) -> Result<(), String> {
-    crate::validate::check_table(a)?;
+    let (from, to) = match (a.dy_from, a.dy_to) {
+        (Some(f), Some(t)) => (f, t),
+        (f, t) => {
+            let e = ((flange_shift(a)? + FLANGE_MARGIN) * 10.0).round() / 10.0;
+            (f.unwrap_or(-e), t.unwrap_or(e))
+        }
+    };
+    crate::validate::check_table(a, from, to)?;
     let (bytes, summary) = match a.precision {
-        Precision::F64 => build_in::<f64>(a)?,
-        Precision::F32 => build_in::<f32>(a)?,
+        Precision::F64 => build_in::<f64>(a, from, to)?,
+        Precision::F32 => build_in::<f32>(a, from, to)?,
     };
     std::fs::write(&a.out, &bytes)
         .map_err(|e| format!("{}: cannot write: {e}", a.out.display()))?;
     crate::out(&summary)
 }
 
-fn build_in<T: Real>(a: &TableArgs) -> Result<(Vec<u8>, String), String> {
+fn build_in<T: Real>(a: &TableArgs, dy_from: f64, dy_to: f64) -> Result<(Vec<u8>, String), String> {
     let t = T::from_f64;
     let wheel = profile_table::<T>(a.wr.wheel.as_deref(), ProfileKind::Wheel)?;
     let rail = profile_table::<T>(a.wr.rail.as_deref(), ProfileKind::Rail)?;
     let side = side_of(a.wr.side);
-    let (d0, d1) = kernel_range(side, a.dy_from, a.dy_to);
-    let n_dy = ((a.dy_to - a.dy_from) / a.dy_step).round() as usize + 1;
+    let (d0, d1) = kernel_range(side, dy_from, dy_to);
+    let n_dy = ((dy_to - dy_from) / a.dy_step).round() as usize + 1;
     let spec = TableSpec {
         dy_min: t(d0),
         dy_max: t(d1),
@@ -99,14 +148,14 @@ fn build_in<T: Real>(a: &TableArgs) -> Result<(Vec<u8>, String), String> {
     let _ = writeln!(
         s,
         "{}: {} bytes ({:?}), {} × {} nodes (shift {} … {} mm towards the {} wheel, F_z {} … {} N), \
-         {}, {} of {} slots used, {} strips per slot; {} nodes not converged; built in {:.1} s",
+         {}, {} slots used (of {}), {} strips per slot; {} nodes not converged; built in {:.1} s",
         a.out.display(),
         rep.bytes,
         a.precision,
         rep.dy_nodes,
         a.loads,
-        a.dy_from,
-        a.dy_to,
+        dy_from,
+        dy_to,
         format!("{:?}", a.wr.side).to_lowercase(),
         a.fz_min,
         a.fz_max,
@@ -278,20 +327,9 @@ fn solve_in<T: Real>(a: &SolveArgs, bytes: &[u8]) -> Result<serde_json::Value, S
     let time_us = median_time_us(|| {
         let _ = std::hint::black_box(run());
     });
-    let mut warnings: Vec<String> = vec![];
-    if h.equilibrium_roll && a.given.iter().any(|g| g == "roll") {
-        warnings.push(
-            "the table was built at the equilibrium roll: the step uses --roll for the creepages \
-             only, not for the geometry"
-                .into(),
-        );
-    } else if !h.equilibrium_roll && a.wr.roll != 0.0 {
-        warnings.push(
-            "the table was built at roll 0: the step uses --roll for the creepages only, not for \
-             the geometry"
-                .into(),
-        );
-    }
+    // a roll other than the table's enters through the roll mapping (docs/realtime.md), fitted
+    // for ±5 mrad about the table's roll
+    let warnings: Vec<String> = vec![];
     for w in &warnings {
         eprintln!("wrc: warning: {w}");
     }

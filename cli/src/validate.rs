@@ -190,8 +190,8 @@ pub fn check_solve(a: &SolveArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// Checks a `table` build: grid ranges and sizes, material, track set-up.
-pub fn check_table(a: &TableArgs) -> Result<(), String> {
+/// Checks the `wrc table` options; `(dy_from, dy_to)` is the shift range (given or found).
+pub fn check_table(a: &TableArgs, dy_from: f64, dy_to: f64) -> Result<(), String> {
     let has = |f: &str| a.given.iter().any(|g| g == f);
     for f in ["dy", "yaw", "roll", "fz"] {
         if has(f) {
@@ -201,18 +201,15 @@ pub fn check_table(a: &TableArgs) -> Result<(), String> {
             ));
         }
     }
-    within("dy-from", a.dy_from, -40.0, 40.0, " mm")?;
-    within("dy-to", a.dy_to, -40.0, 40.0, " mm")?;
-    if a.dy_to <= a.dy_from {
-        return Err(format!(
-            "--dy-to {} must exceed --dy-from {}",
-            a.dy_to, a.dy_from
-        ));
+    within("dy-from", dy_from, -40.0, 40.0, " mm")?;
+    within("dy-to", dy_to, -40.0, 40.0, " mm")?;
+    if dy_to <= dy_from {
+        return Err(format!("--dy-to {dy_to} must exceed --dy-from {dy_from}"));
     }
     positive(
         "dy-step",
         a.dy_step,
-        a.dy_to - a.dy_from,
+        dy_to - dy_from,
         " mm",
         "shift step, mm",
     )?;
@@ -223,7 +220,7 @@ pub fn check_table(a: &TableArgs) -> Result<(), String> {
             a.max_dy_nodes
         ));
     }
-    let n = ((a.dy_to - a.dy_from) / a.dy_step).round() + 1.0;
+    let n = ((dy_to - dy_from) / a.dy_step).round() + 1.0;
     if !(2.0..=4096.0).contains(&n) {
         return Err(format!(
             "--dy-step {} gives {n} shift nodes: accepted 2..=4096",

@@ -968,7 +968,7 @@ fn plots_follow_the_data_and_name_the_case() {
 }
 
 /// `wrc table` writes a contact table; `wrc solve --table` runs the fixed-cost real-time step on
-/// it. On the tread (dy 0 … 2 mm, a table node every 0.5 mm, a load between its nodes) the step
+/// it. On the tread (dy 0 … 2 mm, table nodes every 0.5 mm refined to 11, a load between its nodes) the step
 /// carries the load and its creep force is within the real-time target, 1 % of μF_z, of the
 /// converged solve (measured 0.2 %); the options the table fixes are checked, a damaged or
 /// foreign file is refused, and a state outside the table names the table's range.
@@ -998,7 +998,7 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let summary = String::from_utf8_lossy(&o.stdout);
-    assert!(summary.contains("9 × 3 nodes"), "{summary}");
+    assert!(summary.contains("11 × 3 nodes"), "{summary}");
     for dy in ["0", "1", "2"] {
         let rt = json(&[
             "solve", "--table", ts, "--dy", dy, "--fz", "83300", "--json",
@@ -1075,6 +1075,23 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
     assert_eq!(r32["inputs"]["precision"], "f32");
     let e = fails_with(&["table", "--dy", "2", "--out", ts]);
     assert!(e.contains("no effect on `wrc table`"), "{e}");
+    // the default shift range: both flange contacts (S1002/UIC60 1353 mm at the equilibrium
+    // roll: 9.8 mm) and 2 mm
+    let o = wrc(&[
+        "table",
+        "--back-to-back",
+        "1353",
+        "--equilibrium-roll",
+        "--refine-tol",
+        "0",
+        "--loads",
+        "2",
+        "--out",
+        ts,
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let summary = String::from_utf8_lossy(&o.stdout);
+    assert!(summary.contains("shift -11.8 … 11.8 mm"), "{summary}");
     let _ = std::fs::remove_dir_all(&d);
 }
 

@@ -1,8 +1,8 @@
 //! Cost of the real-time step through the C interface (`wrc_step_f64` / `wrc_step_f32`, the same
 //! entry points the static library exports) against the kernel's `step` called directly, on the
-//! S1002/UIC60 table of bench `realtime_step` (1353 mm, right wheel, equilibrium roll, dy −8…4 mm
-//! every 0.25 mm refined to 1 % (71 nodes) × 15–260 kN in 5 loads, 3 slots × 32 strips) over its 1000 states (dy over the
-//! table, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, 100 km/h plus lateral velocity and yaw rate):
+//! S1002/UIC60 table of bench `realtime_step` (1353 mm, right wheel, equilibrium roll, dy
+//! −11.8…11.8 mm every 0.5 mm refined to 1 % × 15–260 kN in 5 loads, 1 slot × 32 strips) over its
+//! 1000 states (dy −7.9…3.9 mm, F_z 20–150 kN, yaw ±10 mrad, μ 0.1–0.5, 100 km/h plus lateral velocity and yaw rate):
 //! host time per call, median / P99 / max; and the one-off `wrc_table_check_*` (payload hash).
 //!
 //! Run: `cargo run --release -p wrc-ffi --example ffi_step`.

@@ -1,6 +1,6 @@
 //! Writes the S1002/UIC60 contact table of the C tests (1353 mm back-to-back, right wheel,
-//! equilibrium roll, dy −8…4 mm every 0.25 mm refined to 1 % (71 nodes) × 15–260 kN in 5 log-spaced loads, 3 slots × 32
-//! strips) to a file, for C programs (`wrc_table_check_*`, `wrc_step_*`; format: docs/ffi.md).
+//! equilibrium roll, dy −11.8…11.8 mm every 0.5 mm refined to 1 % × 15–260 kN in 5 log-spaced
+//! loads, 1 slot × 32 strips) to a file, for C programs (`wrc_table_check_*`, `wrc_step_*`; format: docs/ffi.md).
 //!
 //! Run: `cargo run --release -p wrc-ffi --example write_table -- OUT.wrct [f32]` (f64 unless `f32`).
 

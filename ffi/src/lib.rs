@@ -36,9 +36,10 @@ use wrc_kernel::{Error, Real};
 pub const WRC_MAX_SLOTS: usize = 4;
 /// Most strips per slot a table may have for this library's step.
 pub const WRC_MAX_STRIPS: usize = 64;
-/// Table format version this library reads (2: explicit shift nodes; version 1 tables are
-/// rejected with [`wrc_status::WRC_ERR_TABLE_VERSION`]: rebuild them).
-pub const WRC_TABLE_VERSION: u32 = 2;
+/// Table format version this library reads (3: only the slots used, the roll mapping's
+/// coefficients; versions 1 and 2 are rejected with [`wrc_status::WRC_ERR_TABLE_VERSION`]:
+/// rebuild them).
+pub const WRC_TABLE_VERSION: u32 = 3;
 /// Size of a table's header, bytes.
 pub const WRC_TABLE_HEADER_BYTES: usize = 128;
 
@@ -108,7 +109,9 @@ impl From<Error> for wrc_status {
                 "shorter than the header" | "length" => WRC_ERR_TABLE_LENGTH,
                 "payload checksum" => WRC_ERR_TABLE_CHECKSUM,
                 "magic" => WRC_ERR_TABLE_MAGIC,
-                "format version" | "format version 1: rebuild the table" => WRC_ERR_TABLE_VERSION,
+                "format version"
+                | "format version 1: rebuild the table"
+                | "format version 2: rebuild the table" => WRC_ERR_TABLE_VERSION,
                 "precision differs from the caller's" => WRC_ERR_TABLE_PRECISION,
                 _ => WRC_ERR_BAD_TABLE,
             },

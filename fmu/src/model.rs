@@ -8,8 +8,8 @@ use wrc_kernel::step::{step, StepInput, StepResult};
 use wrc_kernel::table::ContactTable;
 use wrc_kernel::Error;
 
-/// Slot capacity of the step (the packaged table has 3 slots); also the number of per-slot
-/// output groups `slot1_*` … `slot3_*`.
+/// Slot capacity of the step (the packaged table stores the 1 slot S1002/UIC60 uses; tables of up
+/// to 3 run); also the number of per-slot output groups `slot1_*` … `slot3_*`.
 pub const SLOTS: usize = 3;
 /// Strip capacity of the step (the packaged table has 16 strips per slot).
 pub const STRIP_CAP: usize = 16;

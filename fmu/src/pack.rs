@@ -1,8 +1,10 @@
 //! The packaged contact table and the `.fmu` archive (used by the `wrc-fmu-pack` binary).
 //!
 //! The table is the one `wrc table --back-to-back 1353 --equilibrium-roll --out table.bin`
-//! writes: built-in S1002 wheel / UIC60 rail, right wheel, f64, shift −4 … 8 mm towards the
-//! wheel, coarse nodes every 0.25 mm refined to 1 % (at most 71 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, 3 slots × 16 strips, steel
+//! writes: built-in S1002 wheel / UIC60 rail, right wheel, f64, shift −11.8 … 11.8 mm (the
+//! default: both flange contacts, found from the profiles, and 2 mm), coarse nodes every 0.5 mm
+//! refined to 1 % (at most 190 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, up to 3
+//! slots (1 used) × 16 strips, steel
 //! (E 205 900 MPa, ν 0.28), gauge 1435 mm, gauge depth 14 mm, no cant, r0 460 mm — the same
 //! kernel call with the same arguments as `cli/src/realtime.rs`.
 
@@ -42,8 +44,8 @@ fn profile(kind: ProfileKind) -> Result<Box<ProfileTable<f64, NODES>>, String> {
 pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
     let wheel = profile(ProfileKind::Wheel)?;
     let rail = profile(ProfileKind::Rail)?;
-    // `wrc table` defaults: −4 … 8 mm towards the right wheel = kernel dy −8 … 4 mm (+left).
-    let (dy_from, dy_to, dy_step): (f64, f64, f64) = (-4.0, 8.0, 0.25);
+    // `wrc table` defaults for this pair: the flange contacts at 9.8 mm and 2 mm more.
+    let (dy_from, dy_to, dy_step): (f64, f64, f64) = (-11.8, 11.8, 0.5);
     let spec = TableSpec {
         dy_min: -dy_to,
         dy_max: -dy_from,
@@ -55,7 +57,7 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
         equilibrium_roll: true,
         // `wrc table`'s defaults (--refine-tol, --max-dy-nodes)
         refine_tol: 0.01,
-        max_dy_nodes: 71,
+        max_dy_nodes: 190,
     };
     let setup = TrackSetup {
         gauge: 1435.0,

@@ -1,17 +1,26 @@
-//! The real-time step (`wrc_kernel::step`) on a contact table (`wrc_kernel::table`) against the
-//! converged per-wheel solver it was built from (issue 14): S1002/UIC60, back-to-back 1353 mm,
-//! right wheel, the table at the equilibrium roll, 1000 states with yaw ±10 mrad, loads 25–150 kN, μ 0.3, 100 km/h nominal rolling.
-//! Also: the byte format's checks (a damaged, truncated or foreign table is `BadTable`), bad
-//! inputs, determinism, continuity in the shift.
+//! The real-time step (`wrc_kernel::step`) on contact tables (`wrc_kernel::table`) against the
+//! converged per-wheel solver they were built from (issue 14): S1002/UIC60, both wheels,
+//! back-to-back 1353 and 1360 mm, tables at the equilibrium roll over the shift from flange to
+//! flange (`wrc_host_tests::realtime::Case`).
+//!
+//! * The issue-14 sweep: 300 states per configuration (1200), the shift from flange to flange,
+//!   yaw ±10 mrad, roll ±5 mrad about the equilibrium roll, F_z 20–150 kN, μ 0.1–0.5, kinematic
+//!   creepages with lateral velocity and yaw rate; median / P95 / max per configuration, per
+//!   contact region and overall, the closed form's own part separated.
+//! * The earlier sweeps (1353 mm right wheel, dy −7.9 … 3.9 mm, equilibrium roll, μ 0.3, nominal
+//!   rolling, yaw ±3 and ±10 mrad) with their assertions unchanged.
+//! * Continuity along the shift, the yaw and the roll; the byte format's checks (a damaged,
+//!   truncated or foreign table is `BadTable`), bad inputs, determinism.
 
-use wrc_host_tests::wheelrail::{tables, Table, NODES, R0, SWEEP_SPEED};
-use wrc_kernel::geometry::{
-    equilibrium_roll, Kinematics, Side, TrackSetup, WheelRail, WheelsetPose,
+use std::sync::OnceLock;
+use wrc_host_tests::realtime::{
+    compare, states, stats, Case, Errors, StateRanges, CASES, STANDARD,
 };
+use wrc_host_tests::wheelrail::{tables, NODES, R0, SWEEP_SPEED};
+use wrc_kernel::geometry::{equilibrium_roll, Kinematics, Side, WheelRail, WheelsetPose};
 use wrc_kernel::step::{step, StepInput, StepResult};
 use wrc_kernel::table::{
-    build_table, fnv1a, narrow_to_f32, ContactTable, TableSlot, TableSpec, FNV_OFFSET,
-    HEADER_BYTES, ROW_BUFFERS,
+    fnv1a, narrow_to_f32, BuildReport, ContactTable, FNV_OFFSET, HEADER_BYTES, VERSION,
 };
 use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
 use wrc_kernel::{Error, Material};
@@ -20,46 +29,42 @@ const K: usize = 3;
 const ST: usize = 16;
 const MU: f64 = 0.3;
 const GRID: f64 = 0.05;
-/// States of the accuracy sweep against the converged solver.
+/// States of the earlier accuracy sweeps against the converged solver.
 const STATES: usize = 1000;
+/// States per configuration of the issue-14 sweep.
+const STATES_PER_CASE: usize = 300;
 
-fn setup() -> TrackSetup<f64> {
-    TrackSetup {
-        back_to_back: 1353.0,
-        ..TrackSetup::standard()
-    }
+/// The four configurations' tables ([`CASES`] on their [`Case::spec`]), built once (two at a
+/// time) for every test of this binary.
+fn case_tables() -> &'static [(Vec<u8>, BuildReport)] {
+    static T: OnceLock<Vec<(Vec<u8>, BuildReport)>> = OnceLock::new();
+    T.get_or_init(|| {
+        let build = |c: &Case| {
+            let (b, rep) = c.table::<f64, K, ST>(&c.spec()).unwrap();
+            eprintln!("table {}: {rep:?}", c.label());
+            (b, rep)
+        };
+        let mut out = Vec::new();
+        for pair in CASES.chunks(2) {
+            std::thread::scope(|sc| {
+                let h: Vec<_> = pair.iter().map(|c| sc.spawn(move || build(c))).collect();
+                for x in h {
+                    out.push(x.join().unwrap());
+                }
+            });
+        }
+        out
+    })
 }
 
-/// The examples' grid (`wrc_host_tests::realtime::standard_spec`): dy −8 … 4 mm, coarse every
-/// 0.25 mm, refined to 1 % (71 shift nodes), × 15 … 260 kN in 5 loads.
-fn spec() -> TableSpec<f64> {
-    wrc_host_tests::realtime::standard_spec::<f64>()
+/// The 1353 mm right-wheel table (the examples' standard).
+fn build() -> Vec<u8> {
+    assert_eq!(CASES[0], STANDARD);
+    case_tables()[0].0.clone()
 }
 
-fn build(w: &Table, r: &Table) -> Vec<u8> {
-    let sp = spec();
-    let mut out = vec![0u8; sp.capacity_bytes(K, ST)];
-    let mut rows = vec![TableSlot::<f64, ST>::EMPTY; ROW_BUFFERS * K * sp.n_load];
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let cfg = WheelConfig::recommended(MU, SWEEP_SPEED, R0);
-    let mat = Material::<f64>::steel();
-    let rep = build_table::<f64, NODES, NODES, K, ST, 4, 128, 256, 4, 32, 32, 128>(
-        r,
-        w,
-        &setup(),
-        Side::Right,
-        &mat,
-        &cfg,
-        &sp,
-        &mut rows,
-        &mut ws,
-        &mut out,
-    )
-    .unwrap();
-    out.truncate(rep.bytes);
-    eprintln!("table: {rep:?}");
-    assert_eq!(rep.not_converged, 0);
-    out
+fn setup() -> wrc_kernel::geometry::TrackSetup<f64> {
+    STANDARD.setup()
 }
 
 fn input(dy: f64, fz: f64, pose: WheelsetPose<f64>) -> StepInput<f64> {
@@ -88,7 +93,7 @@ fn totals(r: &StepResult<f64, K>) -> (f64, f64, f64) {
 type Stats = (f64, f64, f64);
 fn sweep(yaw_amp: f64) -> [Stats; 4] {
     let (w, r) = tables().unwrap();
-    let bytes = build(&w, &r);
+    let bytes = build();
     let t = ContactTable::<f64>::from_bytes(&bytes).unwrap();
     let mat = Material::<f64>::steel();
     let cfg = WheelConfig::recommended(MU, SWEEP_SPEED, R0);
@@ -155,16 +160,15 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
     out
 }
 
-/// Issue 14's accuracy against the converged solver, 1000 states with yaw within ±3 mrad:
-/// |ΔN|/F_z ≤ 0.5 %, area ≤ 3 % and pmax ≤ 3 % on every state (measured max 0.07 %, 1.8 %,
-/// 2.7 %); force at P95 (1 % of μF_z; measured 0.69 %). The force maximum misses the target:
-/// 1.41 % at the flange root (dy −5.71 mm, 71 kN: interpolation of the rolling radius and the
-/// reference point between shift nodes, docs/realtime.md; 2.3 % in flange contact before the
-/// slip zone's integrator kept the explicit rule up to z = 1), asserted at 2 % so that a slot
-/// mismatch (a patch changing slot between nodes: 5.1 % and pmax 50 % before the slots were continued by
-/// prediction) cannot return. pmax was 8.6 % at dy −3.37 mm on the evenly spaced 0.25 mm grid
-/// (pmax/F^{1/3} not linear between nodes); the refined grid (71 nodes) brought it to 2.7 %,
-/// the remainder at dy −3.313 mm, within 1 µm of a node: interpolation in the load.
+/// The earlier sweep (1353 mm right wheel, dy −7.9 … 3.9 mm, the equilibrium roll, μ 0.3,
+/// nominal rolling), 1000 states with yaw within ±3 mrad, its assertions kept: |ΔN|/F_z ≤ 0.5 %,
+/// area ≤ 3 % and pmax ≤ 3 % on every state, force at P95 ≤ 1 % of μF_z, force max ≤ 2 %.
+/// Measured on the table over both flanges (168 shift nodes over 23.6 mm; before: 71 over 12 mm):
+/// N max 0.04 %, area max 1.9 %, pmax max 2.7 % (dy −3.313 mm, 84 kN: pmax/F^{1/3} has a kink in
+/// the load between the load nodes there), force P95 0.80 % (0.69 % on the 12 mm table), max
+/// 1.58 % at the flange root (dy −6.16 mm, 122 kN; 1.41 % before: the strips' interpolation in
+/// the load, not the shift nodes — 288 shift nodes leave it). A slot mismatch (a patch changing
+/// slot between nodes) gave 5.1 % and pmax 50 % before the slots were continued by prediction.
 #[test]
 fn realtime_step_against_the_converged_solver() {
     let [sf, sn, sp, sa] = sweep(0.003);
@@ -177,12 +181,11 @@ fn realtime_step_against_the_converged_solver() {
 }
 
 /// The same at yaw within ±10 mrad (curving): the table is built at yaw 0, the step moves the
-/// contact point with yaw (first order) but not the gap, which yaw changes at second order. The
-/// targets hold as at ±3 mrad (measured: load max 0.06 %, area max 2.1 %, force P95 0.59 %,
-/// pmax P95 0.53 %; force max 1.42 %, flange root at 34 kN, dy −5.19 mm, asserted at 2 %) except
-/// the pmax maximum,
-/// 3.9 % at dy −3.313 mm, 84 kN, yaw −7.2 mrad (8.7 % on the evenly spaced grid), asserted at
-/// 4 %. Before the slip zone's direction field was integrated L-stably, large creepage on
+/// contact point with yaw (first order) but not the gap, which yaw changes at second order
+/// (pmax and area by ≤ 3 % on the tread at ±10 mrad, up to 12 and 24 % in flange contact).
+/// Measured: N max 0.04 %, area max 2.1 %, force P95 0.68 %, max 1.38 %, pmax P95 0.55 %, max
+/// 3.9 % at dy −3.44 mm, 46 kN, yaw −7.2 mrad (8.7 % on the first, evenly spaced grid), asserted
+/// at 4 %. Before the slip zone's direction field was integrated L-stably, large creepage on
 /// lightly loaded strips gave 0.77 μN in full slip (force max 23 %).
 #[test]
 fn realtime_step_at_large_yaw() {
@@ -195,10 +198,213 @@ fn realtime_step_at_large_yaw() {
     assert!(sp.2 <= 0.04, "pmax max {sp:?}");
 }
 
+/// Median / P95 / max of the four quantities over `e`, and of the step's force against the
+/// closed form on the converged solver's strips (the table's part) and of the closed form's own.
+fn summary(e: &[&Errors]) -> [(f64, f64, f64); 6] {
+    let pick = |f: fn(&Errors) -> f64| stats(&mut e.iter().map(|x| f(x)).collect::<Vec<_>>());
+    [
+        pick(|x| x.force),
+        pick(|x| x.normal),
+        pick(|x| x.pmax),
+        pick(|x| x.area),
+        pick(|x| x.table_force),
+        pick(|x| x.closed_form),
+    ]
+}
+
+fn show(name: &str, n: usize, s: &[(f64, f64, f64); 6]) {
+    let f = |t: (f64, f64, f64)| {
+        format!(
+            "{:.2} / {:.2} / {:.2}",
+            100.0 * t.0,
+            100.0 * t.1,
+            100.0 * t.2
+        )
+    };
+    eprintln!(
+        "| {name} | {n} | {} | {} | {} | {} | {} | {} |",
+        f(s[0]),
+        f(s[1]),
+        f(s[2]),
+        f(s[3]),
+        f(s[4]),
+        f(s[5])
+    );
+}
+
+/// Contact regions of the report, by the converged solver's contact angle of the most loaded
+/// patch: tread (< 0.25 rad), flange root (0.25 … 0.8 rad), flange (≥ 0.8 rad).
+const REGIONS: [(&str, f64, f64); 3] = [
+    ("tread", 0.0, 0.25),
+    ("flange root", 0.25, 0.8),
+    ("flange", 0.8, 10.0),
+];
+
+/// Issue 14's sweep: 300 states per configuration (1353 and 1360 mm, right and left wheel;
+/// 1200 in all) from flange to flange (0.5 mm beyond each flange contact), yaw ±10 mrad, roll
+/// ±5 mrad about the equilibrium roll, F_z 20–150 kN, μ 0.1–0.5, kinematic creepages with
+/// lateral velocity ±100 mm/s and yaw rate ±0.02 rad/s, against the converged solver at the same
+/// pose, kinematics and μ. Reported (median / P95 / max, % — of μF_z for forces, F_z for N):
+/// per configuration, per contact region and overall, with the force split into the table's part
+/// (the step against the closed-form strip forces on the converged solver's own strips) and the
+/// closed form's own (those against the solver's cell FaStrip).
+///
+/// Measured (docs/realtime.md; all 1200 states inside the tables), on the tread (1067 states,
+/// contact angle < 0.25 rad) median / P95 / max: force 0.13 / 2.62 / 10.0 % of μF_z (the
+/// table's part 0.11 / 2.44 / 8.3 %), N 0.00 / 0.09 / 0.61 % of F_z, pmax 0.17 / 2.32 / 14.9 %,
+/// area 0.43 / 4.17 / 12.9 %: on target at the median, N and pmax also at P95; the rest is roll
+/// about the equilibrium roll that the roll mapping does not hold (with the roll at equilibrium
+/// the table's force part has P95 0.8 %, area 1.1 %). Flange root (60) and flange (73): the
+/// closed-form strip forces' own error dominates (median 5.7 % and 33 % of μF_z against the
+/// cell FaStrip on the solver's strips), in flange contact through the vertical balance also
+/// N's (median 17.5 %). Asserted: every state inside its table, the targets where met (tread
+/// medians, N and pmax P95 on the tread, overall medians), the other measured values as guards.
+#[test]
+fn issue14_sweep_both_wheels_both_back_to_backs() {
+    let mut all: Vec<Errors> = Vec::new();
+    let mut failed: Vec<String> = Vec::new();
+    eprintln!(
+        "| configuration | states | force | N | pmax | area | force: table | force: closed form |"
+    );
+    eprintln!("|---|---|---|---|---|---|---|---|");
+    for (c, case) in CASES.iter().enumerate() {
+        let st = states(case, &StateRanges::issue14(case), STATES_PER_CASE, 0).unwrap();
+        let res = compare::<K, ST>(&case_tables()[c].0, case, &st);
+        let mut ok = Vec::new();
+        for r in res {
+            match r {
+                Ok(e) => ok.push(e),
+                Err(e) => failed.push(e),
+            }
+        }
+        let refs: Vec<&Errors> = ok.iter().collect();
+        show(&case.label(), refs.len(), &summary(&refs));
+        for (name, lo, hi) in REGIONS {
+            let sub: Vec<&Errors> = ok
+                .iter()
+                .filter(|e| e.angle >= lo && e.angle < hi)
+                .collect();
+            show(
+                &format!("{} {name}", case.label()),
+                sub.len(),
+                &summary(&sub),
+            );
+        }
+        all.extend(ok);
+    }
+    let refs: Vec<&Errors> = all.iter().collect();
+    let overall = summary(&refs);
+    show("all", refs.len(), &overall);
+    let mut by_region = Vec::new();
+    for (name, lo, hi) in REGIONS {
+        let sub: Vec<&Errors> = all
+            .iter()
+            .filter(|e| e.angle >= lo && e.angle < hi)
+            .collect();
+        let s = summary(&sub);
+        show(&format!("all {name}"), sub.len(), &s);
+        by_region.push(s);
+    }
+    for (what, key) in [
+        ("force", 0usize),
+        ("force: table", 4),
+        ("pmax", 2),
+        ("area", 3),
+    ] {
+        let mut v: Vec<&Errors> = all.iter().collect();
+        let f = |e: &Errors| {
+            [
+                e.force,
+                e.normal,
+                e.pmax,
+                e.area,
+                e.table_force,
+                e.closed_form,
+            ][key]
+        };
+        v.sort_by(|a, b| f(b).total_cmp(&f(a)));
+        for e in v.iter().filter(|e| e.angle < 0.25).take(3) {
+            eprintln!("worst tread {what} {:.2} %: {}", 100.0 * f(e), e.label);
+        }
+    }
+    {
+        let mut v: Vec<&Errors> = all.iter().filter(|e| e.angle >= 0.25).collect();
+        v.sort_by(|a, b| b.closed_form.total_cmp(&a.closed_form));
+        for e in v.iter().take(4) {
+            eprintln!(
+                "worst flange closed form {:.2} % (angle {:.2}): {}",
+                100.0 * e.closed_form,
+                e.angle,
+                e.label
+            );
+        }
+    }
+    for e in &failed {
+        eprintln!("failed: {e}");
+    }
+    assert!(failed.is_empty(), "{} states failed", failed.len());
+    assert!(all.len() >= 1000);
+    let [tf, tn, tp, ta, tt, _] = by_region[0];
+    // on target at the median on the tread, N and pmax also at P95
+    assert!(tf.0 <= 0.01 && tn.0 <= 0.005 && tp.0 <= 0.03 && ta.0 <= 0.03);
+    assert!(tp.1 <= 0.03, "tread pmax {tp:?}");
+    // states above the targets (force 1 % of μF_z, N 0.5 % of F_z, pmax and area 3 %)
+    for (name, lo, hi) in REGIONS {
+        let sub: Vec<&Errors> = all
+            .iter()
+            .filter(|e| e.angle >= lo && e.angle < hi)
+            .collect();
+        let above = |f: fn(&Errors) -> f64, lim: f64| sub.iter().filter(|e| f(e) > lim).count();
+        eprintln!(
+            "{name}: {} states; above target: force {}, N {}, pmax {}, area {}",
+            sub.len(),
+            above(|e| e.force, 0.01),
+            above(|e| e.normal, 0.005),
+            above(|e| e.pmax, 0.03),
+            above(|e| e.area, 0.03)
+        );
+    }
+    // N on the tread: P95 on target, the maximum (roll about the equilibrium roll, through F_y in
+    // the vertical balance) guarded
+    assert!(tn.1 <= 0.005 && tn.2 <= 0.01, "tread N {tn:?}");
+    // guards at the measured values (rounded up): the tread's P95 and maxima (roll about the
+    // equilibrium roll), the table's part of the force
+    assert!(tf.1 <= 0.035 && tf.2 <= 0.12, "tread force {tf:?}");
+    assert!(
+        tt.1 <= 0.03 && tt.2 <= 0.10,
+        "tread force, table part {tt:?}"
+    );
+    assert!(tp.2 <= 0.16, "tread pmax {tp:?}");
+    assert!(ta.1 <= 0.05 && ta.2 <= 0.15, "tread area {ta:?}");
+    // the flange root and flange: the table's part of the force (the closed form's own is the
+    // strip model's, fastrip.rs) and pmax, area
+    // (the table's part at the flange root, P95 4.6 %, was 3.2 % while the closed form lagged the
+    // rigid slip's turn in flange contact: that bias was common to the step and to the closed
+    // form on the solver's strips and cancelled in their difference)
+    let [_, _, rp, ra, rt, rc] = by_region[1];
+    assert!(rt.1 <= 0.05 && rt.2 <= 0.13, "flange root {rt:?}");
+    assert!(rp.2 <= 0.05 && ra.2 <= 0.18, "flange root {rp:?} {ra:?}");
+    let [_, _, fp, fa, ft, fc] = by_region[2];
+    assert!(
+        ft.2 <= 0.35 && fp.2 <= 0.14 && fa.2 <= 0.28,
+        "flange {ft:?} {fp:?} {fa:?}"
+    );
+    // the closed form's own part in flange contact (of μF_z; N is up to 4 F_z there): median
+    // 5.3 %, max 16.9 % (was 33 % / 77 % before its direction integrator followed the rigid
+    // slip's turn along the strips); at the flange root 1.2 / 6.5 %
+    assert!(fc.0 <= 0.08 && fc.2 <= 0.18, "flange closed form {fc:?}");
+    assert!(
+        rc.0 <= 0.02 && rc.2 <= 0.08,
+        "flange root closed form {rc:?}"
+    );
+    // overall medians on target
+    assert!(overall[0].0 <= 0.01 && overall[1].0 <= 0.005, "{overall:?}");
+    assert!(overall[2].0 <= 0.03 && overall[3].0 <= 0.03, "{overall:?}");
+}
+
 #[test]
 fn damaged_truncated_or_foreign_tables_are_typed_errors() {
-    let (w, r) = tables().unwrap();
-    let bytes = build(&w, &r);
+    let bytes = build();
     assert!(ContactTable::<f64>::from_bytes(&bytes).is_ok());
     assert_eq!(
         ContactTable::<f32>::from_bytes(&bytes).unwrap_err(),
@@ -224,16 +430,25 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
         ContactTable::<f64>::from_bytes(&bad).unwrap_err(),
         Error::BadTable("magic")
     );
-    // format version 1 (evenly spaced shifts, no node array): rebuild
-    let mut bad = bytes.clone();
-    bad[8..12].copy_from_slice(&1u32.to_le_bytes());
-    assert_eq!(
-        ContactTable::<f64>::from_bytes(&bad).unwrap_err(),
-        Error::BadTable("format version 1: rebuild the table")
-    );
+    // format versions 1 (evenly spaced shifts, no node array) and 2 (all slots stored, no roll
+    // mapping): rebuild
+    assert_eq!(VERSION, 3);
+    for (v, why) in [
+        (1u32, "format version 1: rebuild the table"),
+        (2, "format version 2: rebuild the table"),
+        (4, "format version"),
+    ] {
+        let mut bad = bytes.clone();
+        bad[8..12].copy_from_slice(&v.to_le_bytes());
+        assert_eq!(
+            ContactTable::<f64>::from_bytes(&bad).unwrap_err(),
+            Error::BadTable(why)
+        );
+    }
     // shift nodes not strictly increasing, not finite, or not ending at dy_min/dy_max (with a
     // matching checksum, so that the node check is what fails)
-    for (node, v) in [(1, -9.0), (5, f64::NAN), (0, -8.5), (1, -8.0)] {
+    let d0 = f64::from_le_bytes(bytes[HEADER_BYTES..HEADER_BYTES + 8].try_into().unwrap());
+    for (node, v) in [(1, d0 - 1.0), (5, f64::NAN), (0, d0 - 0.5), (1, d0)] {
         let mut bad = bytes.clone();
         let o = HEADER_BYTES + 8 * node;
         bad[o..o + 8].copy_from_slice(&v.to_le_bytes());
@@ -290,7 +505,7 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
         (f64::NAN, 0.0),
         (-83_300.0, 0.0),
         (83_300.0, f64::NAN),
-        (83_300.0, 9.0),
+        (83_300.0, 30.0),
         (1e7, 0.0),
     ] {
         let p = WheelsetPose { dy, ..pose };
@@ -299,8 +514,19 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
             "fz {fz} dy {dy}"
         );
     }
-    // capacity below the table's
+    // capacity below the table's; a roll beyond 0.1 rad; a rolled pose whose equivalent shift
+    // leaves the table (the shift itself inside)
     assert!(step::<f64, 0, ST>(&t, &input(0.0, 83_300.0, pose)).is_err());
+    let rolled = |dy: f64, roll: f64| WheelsetPose { dy, yaw: 0.0, roll };
+    assert_eq!(
+        step::<f64, K, ST>(&t, &input(0.0, 83_300.0, rolled(0.0, 0.15))).unwrap_err(),
+        Error::OutOfRange("roll beyond 0.1 rad")
+    );
+    assert_eq!(
+        step::<f64, K, ST>(&t, &input(8.0, 83_300.0, rolled(8.0, 0.02))).unwrap_err(),
+        Error::OutOfRange("lateral shift outside the contact table")
+    );
+    assert!(step::<f64, K, ST>(&t, &input(8.0, 83_300.0, rolled(8.0, 0.0))).is_ok());
     // deterministic
     let a = step::<f64, K, ST>(
         &t,
@@ -315,41 +541,221 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
     assert_eq!(a, b);
 }
 
+/// A jump found by [`walk`] whose table-side inputs to the strip forces (load, frame,
+/// creepages, pmax, area of every slot) are continuous: a discontinuity of the closed-form strip
+/// forces (`fastrip::strip_forces`), not of the table.
+#[derive(Debug)]
+struct StripJump {
+    #[allow(dead_code)] // printed (Debug)
+    pose: WheelsetPose<f64>,
+    size: f64,
+}
+
+/// Walks `pose_at(u)` for u = 0 … `n` in unit steps at `fz`: no step of the total force may
+/// move it by more than 0.5 % of μF_z unless it is a steep stretch, not a jump: such a step is
+/// cut in 10 and every part checked the same way, down to 10⁻⁴ of a step (a jump stays a jump
+/// however fine the cut; a steep continuous stretch falls below 0.5 %). At a jump the table's
+/// part is checked alone: the step at μ = 10⁻⁹ (creep forces nil, so the vertical balance and
+/// everything the table gives depend on the pose only) must be continuous there (load, frame,
+/// creepages, pmax, area within 10⁻⁴); then the jump is the closed-form strip forces' and is
+/// returned, else the test fails. Returns the largest uncut step, relative to μF_z, and the
+/// strip forces' jumps.
+fn walk(
+    t: &ContactTable<'_, f64>,
+    n: usize,
+    fz: f64,
+    pose_at: &dyn Fn(f64) -> WheelsetPose<f64>,
+) -> (f64, Vec<StripJump>) {
+    let run = |u: f64, mu: f64| {
+        let p = pose_at(u);
+        let inp = StepInput {
+            mu,
+            ..input(p.dy, fz, p)
+        };
+        step::<f64, K, ST>(t, &inp).unwrap_or_else(|e| panic!("{p:?}: {e}"))
+    };
+    let muf = MU * fz;
+    let d = |a: &StepResult<f64, K>, b: &StepResult<f64, K>| {
+        let (ax, ay, _) = totals(a);
+        let (bx, by, _) = totals(b);
+        (bx - ax).hypot(by - ay) / muf
+    };
+    let table_continuous = |u0: f64, u1: f64| {
+        let (a, b) = (run(u0, 1e-9), run(u1, 1e-9));
+        a.slots.iter().zip(&b.slots).all(|(x, y)| {
+            let near = |p: f64, q: f64, scale: f64| (p - q).abs() <= 1e-4 * scale.max(p.abs());
+            near(x.load, y.load, fz)
+                && near(x.angle, y.angle, 1.0)
+                && near(x.y_ref_track, y.y_ref_track, 1.0)
+                && near(x.z_ref_track, y.z_ref_track, 1.0)
+                && near(x.x_ref, y.x_ref, 1.0)
+                && near(x.creepage.xi, y.creepage.xi, 1e-3)
+                && near(x.creepage.eta, y.creepage.eta, 1e-3)
+                && near(x.creepage.phi, y.creepage.phi, 1e-5)
+                && near(x.pmax, y.pmax, 1.0)
+                && near(x.area, y.area, 1.0)
+        })
+    };
+    #[allow(clippy::too_many_arguments)]
+    fn check(
+        run: &dyn Fn(f64, f64) -> StepResult<f64, K>,
+        d: &dyn Fn(&StepResult<f64, K>, &StepResult<f64, K>) -> f64,
+        cont: &dyn Fn(f64, f64) -> bool,
+        pose_at: &dyn Fn(f64) -> WheelsetPose<f64>,
+        (u0, u1): (f64, f64),
+        (f0, f1): (&StepResult<f64, K>, &StepResult<f64, K>),
+        depth: u32,
+        jumps: &mut Vec<StripJump>,
+    ) {
+        let size = d(f0, f1);
+        if size <= 0.005 {
+            return;
+        }
+        if depth == 0 {
+            assert!(
+                cont(u0, u1),
+                "jump of {:.3} % of muFz at {:?}, the table's part too",
+                100.0 * size,
+                pose_at(u0)
+            );
+            jumps.push(StripJump {
+                pose: pose_at(u0),
+                size,
+            });
+            return;
+        }
+        let mut last = (u0, *f0);
+        for m in 1..=10 {
+            let u = u0 + (u1 - u0) * m as f64 / 10.0;
+            let f = if m == 10 { *f1 } else { run(u, MU) };
+            check(
+                run,
+                d,
+                cont,
+                pose_at,
+                (last.0, u),
+                (&last.1, &f),
+                depth - 1,
+                jumps,
+            );
+            last = (u, f);
+        }
+    }
+    let mut jumps = Vec::new();
+    let mut last = run(0.0, MU);
+    let (mut largest, mut largest_at) = (0.0f64, 0.0);
+    for q in 1..=n {
+        let u = q as f64;
+        let now = run(u, MU);
+        if d(&last, &now) > largest {
+            largest = d(&last, &now);
+            largest_at = u;
+        }
+        check(
+            &run,
+            &d,
+            &table_continuous,
+            pose_at,
+            (u - 1.0, u),
+            (&last, &now),
+            4,
+            &mut jumps,
+        );
+        last = now;
+    }
+    eprintln!(
+        "largest step {:.3} % of muFz before {:?}",
+        100.0 * largest,
+        pose_at(largest_at)
+    );
+    (largest, jumps)
+}
+
+/// Continuity along the shift: the 1353 and 1360 mm right-wheel tables from flange to flange
+/// (the states' range) in 0.01 mm steps at 83.3 kN, yaw 0, the equilibrium roll (solved at the
+/// steps, linear between them: the solver's roll is only converged to 1e-9 and would add its
+/// noise); a step above 0.5 % of μF_z (the flange contact, where N changes threefold within
+/// 0.5 mm) must be a steep stretch, not a jump ([`walk`]). Jumps of the closed-form strip forces
+/// are reported, not failed (measured: none along the shift).
 #[test]
 fn realtime_step_is_continuous_along_the_shift() {
     let (w, r) = tables().unwrap();
-    let bytes = build(&w, &r);
-    let t = ContactTable::<f64>::from_bytes(&bytes).unwrap();
-    let pose = WheelsetPose {
-        dy: 0.0,
-        yaw: 0.0,
-        roll: 0.0,
-    };
-    // continuity along the shift in 0.01 mm steps: no jump above 0.5 % of mu Fz
-    let mut last: Option<(f64, f64)> = None;
-    let fz = 83_300.0;
-    for q in 0..=1180 {
-        let dy = -7.9 + 0.01 * q as f64;
-        let r = step::<f64, K, ST>(&t, &input(dy, fz, WheelsetPose { dy, ..pose })).unwrap();
-        let (fx, fy, _) = totals(&r);
-        if let Some((x, y)) = last {
-            let j = ((fx - x).powi(2) + (fy - y).powi(2)).sqrt() / (MU * fz);
-            if j > 0.005 {
-                // a steep stretch, not a jump: refined 10x, every sub-step moves < 0.2 of it
-                let mut lp = (x, y);
-                for m in 1..=10 {
-                    let d = dy - 0.01 + 0.001 * m as f64;
-                    let r = step::<f64, K, ST>(&t, &input(d, fz, WheelsetPose { dy: d, ..pose }))
-                        .unwrap();
-                    let (a, b, _) = totals(&r);
-                    let js = ((a - lp.0).powi(2) + (b - lp.1).powi(2)).sqrt() / (MU * fz);
-                    assert!(js <= 0.2 * j, "jump {:.3}% at dy {d:.3}", 100.0 * js);
-                    lp = (a, b);
-                }
+    for c in [0, 2] {
+        let case = CASES[c];
+        let t = ContactTable::<f64>::from_bytes(&case_tables()[c].0).unwrap();
+        let (lo, hi) = StateRanges::issue14(&case).dy;
+        let n = ((hi - lo) / 0.01).round() as usize;
+        let setup = case.setup::<f64>();
+        let eq: Vec<f64> = (0..=n)
+            .map(|q| {
+                equilibrium_roll::<f64, NODES, NODES>(
+                    &r,
+                    &w,
+                    &setup,
+                    lo + 0.01 * q as f64,
+                    0.0,
+                    GRID,
+                )
+                .unwrap()
+                .roll
+            })
+            .collect();
+        let pose_at = |u: f64| {
+            let q = (u.floor() as usize).min(n - 1);
+            let f = u - q as f64;
+            WheelsetPose {
+                dy: lo + 0.01 * u,
+                yaw: 0.0,
+                roll: eq[q] + (eq[q + 1] - eq[q]) * f,
             }
-        }
-        last = Some((fx, fy));
+        };
+        let (largest, jumps) = walk(&t, n, 83_300.0, &pose_at);
+        eprintln!(
+            "{}: largest step along the shift {:.3} % of muFz; strip-force jumps {jumps:?}",
+            case.label(),
+            100.0 * largest
+        );
     }
+}
+
+/// Continuity in yaw (−10 … 10 mrad in 0.02 mrad steps) and in roll (equilibrium ± 5 mrad in
+/// 0.01 mrad steps, through the roll mapping) on the 1353 mm right-wheel table at 83.3 kN, on
+/// the tread, at the flange root and in flange contact: no jump of the table's part (load,
+/// frame, creepages, pmax, area: none). The closed-form strip forces have jumps of their own
+/// (`fastrip::strip_forces`, where the step at μ = 10⁻⁹ — everything the table gives — is
+/// continuous): measured up to 3.1 % of μF_z (flange root and flange: dy −8.5 mm, yaw 0.72109 and
+/// 8.3379 mrad, 2.0 and 2.1 %; dy −9.8 mm in roll), none on the tread; they are printed and
+/// guarded (at most 3.5 %).
+#[test]
+fn realtime_step_is_continuous_in_yaw_and_roll() {
+    let (w, r) = tables().unwrap();
+    let t = ContactTable::<f64>::from_bytes(&case_tables()[0].0).unwrap();
+    let setup = STANDARD.setup::<f64>();
+    let mut all = Vec::new();
+    for dy in [0.0, -3.3, -6.0, -8.5, -9.8, 6.0] {
+        let eq = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, GRID)
+            .unwrap()
+            .roll;
+        let (yaw, jy) = walk(&t, 1000, 83_300.0, &|u| WheelsetPose {
+            dy,
+            yaw: -0.01 + 2e-5 * u,
+            roll: eq,
+        });
+        let (roll, jr) = walk(&t, 1000, 83_300.0, &|u| WheelsetPose {
+            dy,
+            yaw: 0.0,
+            roll: eq - 0.005 + 1e-5 * u,
+        });
+        eprintln!(
+            "dy {dy}: largest step in yaw {:.3} %, in roll {:.3} % of muFz; strip-force jumps \
+             in yaw {jy:?}, in roll {jr:?}",
+            100.0 * yaw,
+            100.0 * roll
+        );
+        all.extend(jy);
+        all.extend(jr);
+    }
+    assert!(all.iter().all(|j| j.size <= 0.035), "{all:?}");
 }
 
 #[test]
@@ -452,10 +858,7 @@ mod garbage {
 
     fn table() -> &'static [u8] {
         static T: OnceLock<Vec<u8>> = OnceLock::new();
-        T.get_or_init(|| {
-            let (w, r) = tables().unwrap();
-            build(&w, &r)
-        })
+        T.get_or_init(build)
     }
 
     proptest! {

@@ -43,9 +43,10 @@ pub trait WheelProfiles: Real {
         &'static ProfileTable<Self, PROFILE_NODES>,
         &'static ProfileTable<Self, PROFILE_NODES>,
     );
-    /// The bytes of the contact table of [`step_spec`] in precision `Self` (built on the host
-    /// by `firmware-expected` with `wrc_kernel::table::build_table`; on the target the
-    /// generated `table_f32.bin` / `table_f64.bin` in flash).
+    /// The bytes of the state sweep's first table (1353 mm, right wheel, [`SWEEP_TABLES`]) in
+    /// precision `Self` (built on the host by `firmware-expected` with
+    /// `wrc_kernel::table::build_table`; on the target the generated `table_f32_0.bin` /
+    /// `table_f64_0.bin` in flash).
     fn contact_table() -> &'static [u8];
     /// The bytes of the state sweep's table `c` ([`SWEEP_TABLES`]) in precision `Self`, built
     /// on the host as [`WheelProfiles::contact_table`] (table 0 is that table).
@@ -62,25 +63,6 @@ pub const STEP_STATES: usize = 24;
 pub const STEP_SPEED: f64 = 100.0 / 3.6 * 1000.0;
 /// Nominal rolling radius of the step cases, mm.
 pub const STEP_R0: f64 = 460.0;
-
-/// The grid of the step cases' contact table, as `bench/examples/realtime_step.rs` and
-/// `host-tests/tests/realtime_step.rs` (`wrc_host_tests::realtime::standard_spec`): dy −8…4 mm
-/// every 0.25 mm refined to 1 % (at most 71 shift nodes) × 15–260 kN in 5 log-spaced loads,
-/// 0.05 mm gap grid, equilibrium roll.
-pub fn step_spec<T: Real>() -> TableSpec<T> {
-    TableSpec {
-        dy_min: T::from_f64(-8.0),
-        dy_max: T::from_f64(4.0),
-        n_dy: 49,
-        f_min: T::from_f64(15_000.0),
-        f_max: T::from_f64(260_000.0),
-        n_load: 5,
-        grid_step: T::from_f64(0.05),
-        equilibrium_roll: true,
-        refine_tol: T::from_f64(0.01),
-        max_dy_nodes: 71,
-    }
-}
 
 /// The track of the step cases' table: back-to-back 1353 mm, otherwise standard (right wheel).
 pub fn step_setup<T: Real>() -> TrackSetup<T> {
@@ -846,8 +828,10 @@ pub const SWEEP_TABLES: [(f64, Side); 4] = [
 ];
 /// States per table of [`state_sweep`] (1024 in all).
 pub const SWEEP_STATES: usize = 256;
-/// Distance the sweep's shifts keep from the ends of a table's range, mm.
-pub const SWEEP_MARGIN: f64 = 0.3;
+/// Distance the sweep's shifts keep from the ends of a table's range, mm: the tables reach 2 mm
+/// beyond the flange contacts (`wrc_host_tests::realtime::Case::dy_range`), the states 0.5 mm
+/// beyond them, where a roll of 5 mrad still maps inside the table.
+pub const SWEEP_MARGIN: f64 = 1.5;
 
 /// State `q` of the state sweep on a table covering the shifts `dy_lo` … `dy_hi` (mm, kernel
 /// frame): quasi-random over the range (within [`SWEEP_MARGIN`]), yaw ±10 mrad, roll ±5 mrad,
@@ -1017,7 +1001,7 @@ pub const BUILD_STRIPS: usize = 16;
 pub const BUILD_BYTES: usize = 4096;
 
 /// The contact table built on the target (issue 14: "the table built on the host and the one
-/// built on the target agree"): S1002/UIC60 as [`step_spec`] but a small grid, dy −4 … −3 mm in
+/// built on the target agree"): S1002/UIC60 as the sweep's first table but a small grid, dy −4 … −3 mm in
 /// 3 nodes (no refinement) × 40 and 120 kN, 1 slot × 16 strips, from the firmware's profile
 /// tables, metered as one call (placement, equilibrium roll and the converged solve at each
 /// node: the cost of a table node on the target). Results: the table's size and its FNV-1a
@@ -1087,7 +1071,7 @@ pub fn table_build<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Re
     Ok(())
 }
 
-/// The real-time step (issue 14): the contact table of [`step_spec`] read in place
+/// The real-time step (issue 14): the state sweep's first table (1353 mm, right wheel) read in place
 /// (`ContactTable::from_bytes`, metered: it checks the payload checksum), then
 /// `step::step` at each of the [`STEP_STATES`] states of [`step_state`], metered as one series
 /// (median and maximum instructions per step). Per state: ΣF_x and ΣF_y (relative to μF_z), ΣM_z

@@ -3,7 +3,7 @@
 //! `bench/firmware/src/profiles.rs`: the S1002 wheel and UIC60 rail tables (host preprocessing of
 //! `data/profiles/`) as const data in both precisions, bit-exact copies of the tables the
 //! host used for the wheel cases; and `table_f32_<c>.bin` / `table_f64_<c>.bin` beside them: the
-//! contact tables of the step cases (`cases::step_spec`, S1002/UIC60 at 1353 and 1360 mm, right
+//! contact tables of the step cases (`wrc_host_tests::realtime::CASES`, S1002/UIC60 at 1353 and 1360 mm, right
 //! and left wheel, `cases::SWEEP_TABLES`; the first as `examples/realtime_step.rs`) built with
 //! `wrc_kernel::table::build_table`, which the firmware embeds with `include_bytes!` and reads in
 //! place.
@@ -22,11 +22,8 @@ mod cases;
 
 use cases::{NoMeter, Outs, WheelProfiles, NAMES, N_CASES, PROFILE_NODES, STEP_SLOTS, STEP_STRIPS};
 use std::sync::OnceLock;
-use wrc_kernel::geometry::TrackSetup;
 use wrc_kernel::profile::ProfileTable;
-use wrc_kernel::table::{build_table, narrow_to_f32, TableSlot, ROW_BUFFERS};
-use wrc_kernel::wheel::{DefaultWheelWorkspace, WheelConfig};
-use wrc_kernel::Material;
+use wrc_kernel::table::narrow_to_f32;
 
 type Table<T> = ProfileTable<T, PROFILE_NODES>;
 
@@ -57,36 +54,20 @@ fn pair<T: wrc_kernel::Real>() -> Pair<T> {
     (shrink(&w), shrink(&r))
 }
 
-/// The state sweep's contact table `c` (`cases::SWEEP_TABLES`: back-to-back and side) in f64,
-/// built as `examples/realtime_step.rs` builds its table (full-capacity host profile tables, the
-/// solver's recommended configuration at μ 0.3, the examples' grid `cases::step_spec`).
+/// The state sweep's contact table `c` (`cases::SWEEP_TABLES`: back-to-back and side) in f64:
+/// the host tests' table of that case (`wrc_host_tests::realtime::CASES`, its grid from flange to
+/// flange, 3 slots × 16 strips of capacity, the recommended configuration at μ 0.3), as
+/// `examples/realtime_step.rs` builds table 0.
 fn sweep_table_f64(c: usize) -> &'static [u8] {
-    let (w, r) = wrc_bench::tables::<f64>();
-    let spec = cases::step_spec::<f64>();
+    let case = wrc_host_tests::realtime::CASES[c];
     let (b2b, side) = cases::SWEEP_TABLES[c];
-    let setup = TrackSetup {
-        back_to_back: b2b,
-        ..TrackSetup::standard()
-    };
-    let mut out = vec![0u8; spec.capacity_bytes(STEP_SLOTS, STEP_STRIPS)];
-    let mut rows =
-        vec![TableSlot::<f64, STEP_STRIPS>::EMPTY; ROW_BUFFERS * STEP_SLOTS * spec.n_load];
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let cfg = WheelConfig::recommended(0.3, cases::STEP_SPEED, cases::STEP_R0);
-    let rep = build_table::<f64, 2048, 2048, STEP_SLOTS, STEP_STRIPS, 4, 128, 256, 4, 32, 32, 128>(
-        &r,
-        &w,
-        &setup,
-        side,
-        &Material::steel(),
-        &cfg,
-        &spec,
-        &mut rows,
-        &mut ws,
-        &mut out,
-    )
-    .expect("contact table build");
-    out.truncate(rep.bytes);
+    assert!(
+        case.back_to_back == b2b && case.side == side,
+        "SWEEP_TABLES follow CASES"
+    );
+    let (out, rep) = case
+        .table::<f64, STEP_SLOTS, STEP_STRIPS>(&case.spec())
+        .expect("contact table build");
     println!(
         "contact table {c} ({b2b} mm, {side:?}) f64: {} shift nodes, {} nodes solved ({} not converged, {} slots used), {} bytes",
         rep.dy_nodes, rep.nodes, rep.not_converged, rep.slots_used, rep.bytes

@@ -6,35 +6,59 @@
 //! kernel's [`WheelsetPose::dy`], mm, +left) × vertical loads F (N, log-spaced), the converged
 //! normal solution of the per-wheel solver ([`crate::wheel::solve_wheel`] with zero creepage, so
 //! that Σ_k N_k cos δ_k = F) with every patch in a fixed **slot**:
-//! * per node: the wheelset roll used (0, or the two-wheel equilibrium roll of the shift,
-//!   [`TableSpec::equilibrium_roll`]), the wheel centre height of the touching position and the
-//!   vertical approach δ_v;
-//! * per slot: the load share N_k/F, the frame (contact angle, rolling radius, reference point in
-//!   the track frame and in the rail file, normal approach), pmax/F^{1/3}, area/F^{2/3}, and the
-//!   lateral span [y_lo, y_hi] (contact frame) carrying [`ST`-many](ContactTable::strips) evenly
-//!   spaced strips with their half-length a_j/F^{1/3}, peak pressure p̂_j/F^{1/3} and local
-//!   ellipse ratio n_j/m_j (Ayasse–Chollet), resampled from the solver's own STRIPES strips.
+//! * per node ([`NodeField`]): the wheelset roll used (0, or the two-wheel equilibrium roll of the
+//!   shift, [`TableSpec::equilibrium_roll`]), the wheel centre height of the touching position,
+//!   the vertical approach δ_v, and the roll mapping's equivalent shift per roll c₁, c₂ (below);
+//! * per slot ([`SlotField`]): the load share N_k/F, the frame (contact angle, rolling radius,
+//!   reference point in the track frame and in the rail file, normal approach), pmax/F^{1/3},
+//!   area/F^{2/3}, the lateral span [y_lo, y_hi] (contact frame) carrying
+//!   [`ST`-many](ContactTable::strips) evenly spaced strips with their half-length a_j/F^{1/3},
+//!   peak pressure p̂_j/F^{1/3} and local ellipse ratio n_j/m_j (Ayasse–Chollet), resampled from
+//!   the solver's own STRIPES strips, and the rail point's lateral move per change of contact
+//!   angle m₁, m₂ (below).
 //!
 //! The load scalings are Hertz's (a, p ∝ F^{1/3}, area and approach ∝ F^{2/3}), so the stored
-//! values vary slowly along the load axis and are interpolated linearly in ln F.
+//! values vary slowly along the load axis; the step interpolates them linearly in ln F, the frame
+//! quadratically.
 //!
 //! # Slots and continuity
 //! Patches are assigned to slots by continuation: nodes are visited dy-major; each patch goes to
 //! the slot whose reference point (rail-file y) at the neighbouring node (previous dy, same load,
 //! predicted linearly from the two previous shifts — it moves up to ~12 mm per mm of shift on
 //! S1002/UIC60; else same dy, previous load) is nearest, within [`crate::wheel::MATCH_MM`],
-//! slots continuing a neighbouring node's patch first; a new patch takes a free slot. A slot without a patch at a node has load share 0 and zero strips, and carries
-//! the frame of its nearest node with a patch, so that interpolation fades a patch in and out
-//! continuously (the load goes to 0, the frame does not jump).
+//! slots continuing a neighbouring node's patch first; a new patch takes a free slot. A slot
+//! without a patch at a node has load share 0 and zero strips, and carries the frame of its
+//! nearest node with a patch, so that interpolation fades a patch in and out continuously (the
+//! load goes to 0, the frame does not jump). Only the slots the pair uses are stored.
 //!
-//! # The shift grid (format version 2)
+//! # The shift grid
 //! The shift nodes are explicit and need not be evenly spaced: [`build_table`] starts from
 //! [`TableSpec::n_dy`] evenly spaced nodes and bisects an interval while the exact solution at its
 //! midpoint differs from the linear interpolation of its end nodes by more than
-//! [`TableSpec::refine_tol`] (per slot and load: pmax relative to the node's largest pmax, area
-//! relative to the node's total area, load share absolute), at most [`REFINE_DEPTH`] times per
-//! coarse interval and up to [`TableSpec::max_dy_nodes`] nodes in all. The step locates the shift
-//! interval by a binary search of a fixed [`DY_HALVINGS`] halvings (any table, any shift).
+//! [`TableSpec::refine_tol`], per slot and load, in any of: pmax relative to the node's largest
+//! pmax, area relative to the node's total area, load share absolute, and the creep force the
+//! frame gives — the interpolated wheel arm and contact angle turned into creepage errors
+//! (ξ = 1 + arm/R0, φ = ± sin δ/R0 in nominal rolling) and into a force, the smaller of linear
+//! theory (G·C11·A·Δ/(μN), C11 taken as 4, μ = 0.3) and the turn of a saturated force (Δ over the
+//! nominal creepage). Intervals are bisected down to the coarse spacing / 2^[`REFINE_DEPTH`],
+//! up to [`TableSpec::max_dy_nodes`] nodes in all. The step locates the shift interval by a
+//! binary search of a fixed [`DY_HALVINGS`] halvings (any table, any shift).
+//!
+//! # Roll
+//! A wheelset rolled by Δθ from the table's roll turns the wheel about the axle: its profile moves
+//! laterally by ≈ r Δθ (r the wheel centre's height above the contact, ≈ 460 mm) and tilts by Δθ
+//! (S1002/UIC60, ±5 mrad about the equilibrium roll: the contact moves up to 19 mm and the creep
+//! force by up to 150 % of μF_z without a correction). The table maps the rolled pose to the
+//! node pose with the same wheel point in contact: that wheel point touches the rail where the
+//! rail's contact angle is the node's turned by ∓Δθ (right/left wheel), so the equivalent shift
+//! is d = dy + c₁Δθ + c₂Δθ² (≈ r + ρ cos δ per rad, ρ the rail's curvature radius: 760 mm on the
+//! UIC60 crown, 480 mm in flange contact). [`build_table`] samples the rail at the angles δ ±
+//! [`ROLL_FIT`] around each patch's reference point and fits m₁, m₂ (the rail point's lateral
+//! move) and c₁, c₂ (load-share weighted over the slots) exactly there, then limits how fast c₁,
+//! c₂ change along the shift ([`ROLL_MONOTONE`]) so that the mapping has one root. The step
+//! ([`crate::step`]) finds the root by its shift search, takes the node values there and turns the
+//! frame: the contact angle by ∓Δθ, the wheel's arm to the contact about the axle, the rail point
+//! along the rail by m₁, m₂.
 //!
 //! # Bytes (format version [`VERSION`])
 //! A table is plain bytes (a rig keeps it in flash and the step reads it in place): a header of
@@ -51,9 +75,10 @@
 //! wheel profile (112), node array and payload (120: every byte after the header).
 //! [`ContactTable::from_bytes`] checks every field, the length, the nodes (finite, strictly
 //! increasing, ends equal to dy_min and dy_max) and the checksum before use; a wrong, truncated or
-//! damaged table is [`Error::BadTable`], never a panic. Version 1 tables (evenly spaced shifts,
-//! no node array) are rejected with [`Error::BadTable`]`("format version 1: rebuild the table")`:
-//! rebuild them (`wrc table`), they are derived data.
+//! damaged table is [`Error::BadTable`], never a panic. Tables of format versions 1 (evenly
+//! spaced shifts, no node array) and 2 (every slot of the build's capacity stored, no roll
+//! mapping) are rejected with [`Error::BadTable`]`("format version 1: rebuild the table")`
+//! (resp. `2`): rebuild them (`wrc table`), they are derived data.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
@@ -61,7 +86,7 @@ use crate::error::{check_finite, check_positive, Error};
 use crate::geometry::{equilibrium_roll, Side, TrackSetup, WheelRail, WheelsetPose};
 use crate::math;
 use crate::patch::Creepage;
-use crate::profile::ProfileTable;
+use crate::profile::{illinois, ProfileTable};
 use crate::wheel::{resolve_patch_strips, solve_wheel, WheelConfig, WheelWorkspace, MATCH_MM};
 use crate::{Material, Real};
 use core::marker::PhantomData;
@@ -69,7 +94,7 @@ use core::marker::PhantomData;
 /// Format magic.
 pub const MAGIC: [u8; 8] = *b"WRCTABLE";
 /// Format version of the byte layout.
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 /// Most shift nodes of a table.
 pub const MAX_DY_NODES: usize = 4096;
 /// Halvings of the step's binary search for the shift interval: ⌈log₂ [`MAX_DY_NODES`]⌉, the
@@ -82,10 +107,32 @@ pub const REFINE_DEPTH: usize = 5;
 pub const ROW_BUFFERS: usize = 3;
 /// Header size, bytes.
 pub const HEADER_BYTES: usize = 128;
-/// Values per node before the slots: roll (rad), wheel centre height cz (mm), δ_v/F^{2/3}.
-pub const NODE_FIXED: usize = 3;
+/// Values per node before the slots (see [`NodeField`]).
+pub const NODE_FIXED: usize = 5;
 /// Values per slot before the strips (see [`SlotField`]).
-pub const SLOT_FIXED: usize = 12;
+pub const SLOT_FIXED: usize = 14;
+/// Roll offset (rad) at which [`build_table`] samples the rail to fit the roll mapping's
+/// quadratics ([`NodeField::ShiftPerRoll`], [`SlotField::RailShift`]): exact at 0 and ±this.
+pub const ROLL_FIT: f64 = 0.005;
+
+/// The per-node fixed values, in their order in the payload.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(usize)]
+pub enum NodeField {
+    /// Wheelset roll of the node, rad (0, or the two-wheel equilibrium roll of its shift).
+    Roll = 0,
+    /// Wheel centre height at touching, mm (track frame).
+    CentreHeight,
+    /// Vertical approach δ_v / F^{2/3}, mm·N^{−2/3}.
+    Approach,
+    /// Equivalent shift per roll c₁, mm/rad: a pose rolled by Δθ from the node's roll touches
+    /// with the node's wheel points at the shift dy + c₁ Δθ + c₂ Δθ² (module docs, "Roll");
+    /// load-share weighted over the slots (≈ r + ρ cos δ: r the wheel centre's height above the
+    /// reference point, ρ the rail's curvature radius there).
+    ShiftPerRoll,
+    /// Its quadratic coefficient c₂, mm/rad².
+    ShiftPerRoll2,
+}
 
 /// The per-slot fixed values, in their order in the payload.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -115,6 +162,11 @@ pub enum SlotField {
     YLo,
     /// Upper end of the strips' span, mm.
     YHi,
+    /// Lateral move (track frame, mm) of the rail point whose contact angle is δ + Δδ, per
+    /// Δδ: m₁ in Δy = m₁ Δδ + m₂ Δδ², mm/rad (≈ ±ρ cos δ, ρ the rail's curvature radius).
+    RailShift,
+    /// Its quadratic coefficient m₂, mm/rad².
+    RailShift2,
 }
 
 /// Grid and set-up of a table build.
@@ -304,6 +356,7 @@ impl<'a, T: Real> ContactTable<'a, T> {
         match u32_at(bytes, 8) {
             VERSION => {}
             1 => return Err(Error::BadTable("format version 1: rebuild the table")),
+            2 => return Err(Error::BadTable("format version 2: rebuild the table")),
             _ => return Err(Error::BadTable("format version")),
         }
         let vb = u32_at(bytes, 12) as usize;
@@ -606,6 +659,9 @@ pub fn build_table<
     let mut last_y: [Option<T>; K] = [None; K];
     let mut fx_c = [[T::ZERO; NODE_FIXED]; 256];
     let mut fx_m = [[T::ZERO; NODE_FIXED]; 256];
+    // the creepage criterion's linear-theory force per creepage, over μ = 0.3 (module docs):
+    // G·C·A/(μN) with C = 4 (Kalker's C11 ≈ 3.4 … 5), per unit A/N
+    let lin = (mat.g * math::c::<T>(4.0 / 0.3), setup.r0);
     let coarse = |i: usize| {
         if i == 0 {
             spec.dy_min
@@ -630,6 +686,7 @@ pub fn build_table<
     write_row::<T, K, ST>(out, rows_at, node_bytes, 0, spec.dy_min, &fx_c, cand, nl)?;
     ctx.commit(stats);
     prev.copy_from_slice(cand);
+    let mut fx_p = fx_c;
     let mut n = 1usize;
     // shifts of the last two accepted rows (the slots' linear prediction)
     let (mut dl, mut dll) = (spec.dy_min, spec.dy_min);
@@ -640,6 +697,12 @@ pub fn build_table<
             T::ZERO
         }
     };
+    // the finest interval refinement makes: the coarse spacing / 2^REFINE_DEPTH (with room for
+    // rounding)
+    let finest = (spec.dy_max - spec.dy_min)
+        / T::from_usize(spec.n_dy - 1)
+        / T::from_usize(1 << REFINE_DEPTH)
+        * math::c(1.5);
     // pending right ends: the coarse node, then midpoints (at most REFINE_DEPTH)
     let mut stack = [T::ZERO; REFINE_DEPTH + 1];
     for i in 1..spec.n_dy {
@@ -667,7 +730,11 @@ pub fn build_table<
             let m = (dl + r) * T::HALF;
             // nodes if m is added: accepted, pending, the coarse ones after i, m
             let room = n + sp + (spec.n_dy - 1 - i) < cap;
-            if spec.refine_tol > T::ZERO && sp <= REFINE_DEPTH && room && m > dl && m < r {
+            // the interval's depth below its coarse interval (the stack holds pending right
+            // ends, not levels: after a midpoint is accepted its right neighbour's interval is
+            // as fine as the midpoint's)
+            let deep = r - dl <= finest;
+            if spec.refine_tol > T::ZERO && sp <= REFINE_DEPTH && !deep && room && m > dl && m < r {
                 let mut ly_m = last_y;
                 let st_m = ctx.row(
                     &mut geom,
@@ -680,7 +747,9 @@ pub fn build_table<
                     &mut ly_m,
                 )?;
                 let w = (m - dl) / (r - dl);
-                if interp_error::<T, K, ST>(prev, cand, mid, w, nl) > spec.refine_tol {
+                let rows = [(&*prev, &fx_p), (&*cand, &fx_c), (&*mid, &fx_m)];
+                let loads = (spec.f_min, spec.f_max);
+                if interp_error::<T, K, ST>(rows, w, nl, loads, lin) > spec.refine_tol {
                     stack[sp] = m;
                     sp += 1;
                     cand.swap_with_slice(mid);
@@ -696,6 +765,7 @@ pub fn build_table<
             ctx.commit(st_c);
             last_y = ly_c;
             prev.copy_from_slice(cand);
+            fx_p = fx_c;
             dll = dl;
             dl = r;
             n += 1;
@@ -724,6 +794,7 @@ pub fn build_table<
         );
     }
     let total = table_bytes::<T>(n, nl, used, ST);
+    limit_roll_slopes::<T>(&mut out[HEADER_BYTES..total], n, nl, compact);
     let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..total]);
     let hdr = &mut out[..HEADER_BYTES];
     hdr.fill(0);
@@ -754,16 +825,26 @@ pub fn build_table<
     Ok(rep)
 }
 
-/// Largest difference, over the loads and slots, between the rows `m` and the interpolation
-/// `l` + w (`r` − `l`): pmax relative to the node's largest pmax, area relative to the node's
-/// total area, load share absolute.
+/// Largest interpolation error of the rows `(l, r, m)` (left end, right end, midpoint, each its
+/// slots and node values) at the midpoint's weight `w`, over the loads and slots: pmax relative
+/// to the node's largest pmax, area relative to the node's total area, load share absolute, and
+/// the creepage criterion (module docs): the creepage error Δ = (|Δa| + √(A/π)|Δ sin δ|)/R0
+/// (a = z_ref − cz the wheel's arm to the reference point: ξ = 1 + a/R0 in nominal rolling,
+/// φ = ± sin δ/R0) as a force, min(G·C/μ·A/N·Δ, Δ/c₀): linear theory, or a turn of the
+/// saturated force by Δ over the nominal creepage c₀ = |1 + a/R0| + √(A/π)|sin δ|/R0; A and N
+/// the midpoint slot's area and load, `lin` = (G·C/μ, R0); `loads` = (f_min, f_max) of the
+/// log-spaced load nodes.
+#[allow(clippy::type_complexity)]
 fn interp_error<T: Real, const K: usize, const ST: usize>(
-    l: &[TableSlot<T, ST>],
-    r: &[TableSlot<T, ST>],
-    m: &[TableSlot<T, ST>],
+    rows: [(&[TableSlot<T, ST>], &[[T; NODE_FIXED]; 256]); 3],
     w: T,
     nl: usize,
+    loads: (T, T),
+    lin: (T, T),
 ) -> T {
+    let (lin, r0) = lin;
+    let [(l, fl), (r, fr), (m, fm)] = rows;
+    let cz = NodeField::CentreHeight as usize;
     let mut e = T::ZERO;
     for j in 0..nl {
         let v = |s: &[TableSlot<T, ST>], k: usize, f: SlotField| s[j * K + k].fixed[f as usize];
@@ -783,6 +864,31 @@ fn interp_error<T: Real, const K: usize, const ST: usize>(
             }
             if aref > T::ZERO {
                 e = math::max(e, d(SlotField::Area) / aref);
+            }
+            // the creepages the frame gives (the stored area and share are per F^{2/3}, per F)
+            let share = v(m, k, SlotField::Share);
+            if m[j * K + k].present && share > T::ZERO {
+                let arm = |s: &[TableSlot<T, ST>], f: &[[T; NODE_FIXED]; 256]| {
+                    v(s, k, SlotField::ZRefTrack) - f[j][cz]
+                };
+                let (al, ar) = (arm(l, fl), arm(r, fr));
+                let d_arm = math::abs(al + (ar - al) * w - arm(m, fm));
+                let sin = |s: &[TableSlot<T, ST>]| math::sin(v(s, k, SlotField::Angle));
+                let (sl, sr) = (sin(l), sin(r));
+                let d_sin = math::abs(sl + (sr - sl) * w - sin(m));
+                // A/N = (area F^{2/3})/(share F), √(A/π) = √(area/π) F^{1/3} (the stored area
+                // and share are per F^{2/3} and per F)
+                let uj = T::from_usize(j) / T::from_usize(nl - 1);
+                let f13 = math::cbrt(math::exp(
+                    math::ln(loads.0) * (T::ONE - uj) + math::ln(loads.1) * uj,
+                ));
+                let area = v(m, k, SlotField::Area);
+                let sq = math::sqrt(area / T::PI) * f13;
+                let delta = (d_arm + sq * d_sin) / r0;
+                let c0 = math::abs(T::ONE + arm(m, fm) / r0) + sq * math::abs(sin(m)) / r0;
+                let e_lin = lin * area / (share * f13) * delta;
+                let e_sat = if c0 > T::ZERO { delta / c0 } else { e_lin };
+                e = math::max(e, math::min(e_lin, e_sat));
             }
         }
     }
@@ -904,7 +1010,15 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
             max_patches = max_patches.max(res.n);
             let f13 = math::cbrt(f);
             let f23 = f13 * f13;
-            fixed[j] = [roll, geom.wheel.cz, res.vertical_approach / f23];
+            fixed[j] = [
+                roll,
+                geom.wheel.cz,
+                res.vertical_approach / f23,
+                T::ZERO,
+                T::ZERO,
+            ];
+            // the equivalent shift per roll, load-share weighted over the patches
+            let (mut c1_sum, mut c2_sum, mut s_sum) = (T::ZERO, T::ZERO, T::ZERO);
             // candidates: previous shift, same load (predicted linearly from the two previous
             // shifts where the slot had a patch at both: the reference point can move several mm
             // per mm of shift); else same shift, previous load; else last
@@ -982,6 +1096,28 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 slot.fixed[SlotField::Approach as usize] = fr.approach / f23;
                 slot.fixed[SlotField::Pmax as usize] = wp.result.pmax / f13;
                 slot.fixed[SlotField::Area as usize] = wp.result.area / f23;
+                // the roll mapping: the rail points at contact angles δ ± h (lateral moves in
+                // the track frame, y_T = σ y_S), and the shift that keeps the node's wheel point
+                // in contact at roll ± h
+                let sigma = self.side.sign::<T>();
+                let h = math::c::<T>(ROLL_FIT);
+                let y_s = sigma * fr.y_ref_track;
+                let m_p = sigma * rail_move(geom, y_s, h);
+                let m_m = sigma * rail_move(geom, y_s, -h);
+                slot.fixed[SlotField::RailShift as usize] = (m_p - m_m) / (h + h);
+                slot.fixed[SlotField::RailShift2 as usize] = (m_p + m_m) / (T::TWO * h * h);
+                let (rv, vy) = (geom.wheel.cz - fr.z_ref_track, fr.y_ref_track - dy);
+                // the angle turns by −Δθ on the right wheel, +Δθ on the left
+                let (m_at_p, m_at_m) = match self.side {
+                    Side::Right => (m_m, m_p),
+                    Side::Left => (m_p, m_m),
+                };
+                let g = |m: T, th: T| m - rv * math::sin(th) + vy * (T::ONE - math::cos(th));
+                let (g_p, g_m) = (g(m_at_p, h), g(m_at_m, -h));
+                let share = wp.load / f;
+                c1_sum -= share * (g_p - g_m) / (h + h);
+                c2_sum -= share * (g_p + g_m) / (T::TWO * h * h);
+                s_sum += share;
                 resolve_patch_strips(ws, q, wp.load, mat, c)?;
                 resample(&ws.pipeline.set, wp.load, &mut slot)?;
                 for v in slot.a.iter_mut() {
@@ -991,6 +1127,10 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                     *v /= f13;
                 }
                 cur[j * K + k] = slot;
+            }
+            if s_sum > T::ZERO {
+                fixed[j][NodeField::ShiftPerRoll as usize] = c1_sum / s_sum;
+                fixed[j][NodeField::ShiftPerRoll2 as usize] = c2_sum / s_sum;
             }
         }
         // empty slots carry the frame of their nearest present node of this row (continuity)
@@ -1029,6 +1169,124 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
         }
         Ok((max_patches, slots_used))
     }
+}
+
+/// Roll offset (rad) up to which the roll mapping's h(d) = d − dy − c₁Δθ − c₂Δθ² is kept
+/// strictly increasing in d (a unique, continuous root): [`build_table`] limits how fast c₁ and c₂
+/// may change along the shift (`limit_roll_slopes`).
+pub const ROLL_MONOTONE: f64 = 0.006;
+
+/// Limits the change of the roll mapping's coefficients between shift nodes, per load node, to
+/// |Δc₁| ≤ 0.45 Δd/[`ROLL_MONOTONE`] and |Δc₂| ≤ 0.45 Δd/[`ROLL_MONOTONE`]², so that h(d)
+/// rises by at least a tenth of Δd between nodes for every |Δθ| ≤ [`ROLL_MONOTONE`] (the node
+/// roll rises with d and only adds to it); coefficients already within the limit are kept. A
+/// jump of c₁ (the reference point crossing from one rail arc to the next, e.g. 475 → 540 mm/rad
+/// at the S1002/UIC60 flange root within 0.06 mm) folded h and made the mapping jump between
+/// roots. [`ROLL_RELAX`] sweeps move both ends of every pair beyond the limit towards each other
+/// (spreading a jump evenly to both sides), then a forward and a backward clamp to the
+/// neighbour's ± limit make every pair satisfy it (in place). `body` is the node array and
+/// payload, `node_bytes` the stored node size.
+fn limit_roll_slopes<T: Real>(body: &mut [u8], ny: usize, nl: usize, node_bytes: usize) {
+    let (nodes, payload) = body.split_at_mut(ny * T::BYTES);
+    let dy = |i: usize| T::read_le(&nodes[i * T::BYTES..(i + 1) * T::BYTES]);
+    let m = math::c::<T>(ROLL_MONOTONE);
+    let k = math::c::<T>(0.45);
+    for (field, lip) in [
+        (NodeField::ShiftPerRoll, k / m),
+        (NodeField::ShiftPerRoll2, k / (m * m)),
+    ] {
+        for j in 0..nl {
+            let o = |i: usize| (i * nl + j) * node_bytes + field as usize * T::BYTES;
+            let get = |p: &[u8], i: usize| T::read_le(&p[o(i)..o(i) + T::BYTES]);
+            let put = |p: &mut [u8], i: usize, v: T| v.write_le(&mut p[o(i)..o(i) + T::BYTES]);
+            for _ in 0..ROLL_RELAX {
+                for i in 1..ny {
+                    let step = lip * (dy(i) - dy(i - 1));
+                    let (a, b) = (get(payload, i - 1), get(payload, i));
+                    let excess = math::abs(b - a) - step;
+                    if excess > T::ZERO {
+                        let half = if b > a { excess } else { -excess } * T::HALF;
+                        put(payload, i - 1, a + half);
+                        put(payload, i, b - half);
+                    }
+                }
+            }
+            for i in 1..ny {
+                let step = lip * (dy(i) - dy(i - 1));
+                let prev = get(payload, i - 1);
+                put(
+                    payload,
+                    i,
+                    math::clamp(get(payload, i), prev - step, prev + step),
+                );
+            }
+            for i in (0..ny.saturating_sub(1)).rev() {
+                let step = lip * (dy(i + 1) - dy(i));
+                let next = get(payload, i + 1);
+                put(
+                    payload,
+                    i,
+                    math::clamp(get(payload, i), next - step, next + step),
+                );
+            }
+        }
+    }
+}
+
+/// Symmetric relaxation sweeps of the build's limit on the roll mapping's coefficients
+/// ([`ROLL_MONOTONE`]) before its final clamp.
+pub const ROLL_RELAX: usize = 64;
+
+/// Lateral move (side frame S, mm) from the rail point at `y_s` to the nearby rail point whose
+/// surface angle is larger by `da` (rad): bracketed by node steps (at most 400 nodes either
+/// way), then regula falsi. Where the angle is not reached (a straight or concave stretch) the
+/// move of a 1000 mm radius (the rail flatter than that counts as that curved).
+fn rail_move<T: Real, const N: usize, const M: usize>(
+    geom: &WheelRail<'_, T, N, M>,
+    y_s: T,
+    da: T,
+) -> T {
+    let rail = &geom.rail;
+    let t0 = geom.rail_t_at(y_s);
+    let p0 = rail.at(t0);
+    let target = p0.angle + da;
+    let fallback = {
+        // a 1000 mm arc: dy_S = ρ·d(sin α) ≈ ρ cos α · da, sign from the surface's turn
+        let sgn = if rail.at(t0 + T::ONE).angle >= p0.angle {
+            T::ONE
+        } else {
+            -T::ONE
+        };
+        let dy_dt = rail.at(t0 + T::ONE).y - p0.y;
+        let dir = if dy_dt >= T::ZERO { T::ONE } else { -T::ONE };
+        math::c::<T>(1000.0) * math::cos(p0.angle) * da * sgn * dir
+    };
+    let len = T::from_usize(rail.table.len.saturating_sub(1));
+    // direction of t in which the angle moves towards the target
+    let a1 = rail.at(math::min(t0 + T::ONE, len)).angle;
+    let up = (a1 >= p0.angle) == (da >= T::ZERO);
+    let step = if up { T::ONE } else { -T::ONE };
+    let (mut ta, mut fa) = (t0, p0.angle - target);
+    for _ in 0..400 {
+        let tb = ta + step;
+        if !(tb >= T::ZERO && tb <= len) {
+            return fallback;
+        }
+        let fb = rail.at(tb).angle - target;
+        if (fa <= T::ZERO) != (fb <= T::ZERO) {
+            let u = illinois(
+                |u| rail.at(ta + u * (tb - ta)).angle - target,
+                fa,
+                fb,
+                60,
+                math::c(1e-12),
+            );
+            return rail.at(ta + u * (tb - ta)).y - p0.y;
+        }
+        ta = tb;
+        fa = fb;
+    }
+    fallback
 }
 
 /// Copies, for every slot of every node that has no frame yet (all fixed values 0), the frame of

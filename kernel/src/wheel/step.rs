@@ -2,19 +2,23 @@
 //! fixed cost — no data-dependent iteration anywhere.
 //!
 //! Per call, top-down:
-//! 1. **Cell of the table**: the shift `pose.dy` is located among the table's (not necessarily
-//!    evenly spaced) shift nodes by a binary search of a fixed [`DY_HALVINGS`] halvings, once per
-//!    call; the load then locates the cell (linear in dy, linear in ln F); a shift or load
-//!    outside the table is `OutOfRange`, never extrapolated.
+//! 1. **Cell of the table**: the shift interval by a binary search of a fixed [`DY_HALVINGS`]
+//!    halvings among the table's (not necessarily evenly spaced) shift nodes, once per call, for
+//!    the root of the roll mapping h(d) = d − dy − c₁Δθ − c₂Δθ², Δθ = roll − node roll (the node
+//!    pose with the same wheel point in contact, [`crate::table`] "Roll"; at the table's roll
+//!    d = dy); the load then locates the cell (linear in dy, linear in ln F, the frame quadratic in
+//!    ln F); a shift or load outside the table is `OutOfRange`, never extrapolated.
 //! 2. **Vertical balance** (fixed [`BALANCE_STEPS`] steps): the table's load coordinate F (the
 //!    load at which Σ_k N_k cos δ_k = F) solves F · Σ_k s_k(F)(cos δ_k(F) + r_k e_k(F)) = F_z,
 //!    s_k = N_k/F the slot's load share, e_k = ∓ sin δ_k (right/left wheel) the vertical
 //!    component of the lateral axis and r_k = F_y,k/N_k the creep-force ratio of the previous
 //!    round. The shares depend weakly on F, so the fixed-point steps F ← F_z/Σ(…) converge
 //!    fast (contraction |d ln Σ/d ln F| ≪ 1).
-//! 3. **Slots at F**: every slot's frame, load N_k = s_k F, pmax, area and its `ST` strips
-//!    (a_j, p̂_j scaled by F^{1/3}, p̂ rescaled so the strips carry N_k exactly, Kalker's
-//!    C_ij at the local ellipse n_j/m_j: Ayasse–Chollet).
+//! 3. **Slots at F**: every slot's frame turned by the roll relative to the node's (contact
+//!    angle ∓Δθ, the wheel's arm to the contact about the axle, the rail point along the rail),
+//!    load N_k = s_k F, pmax, area and its `ST` strips (a_j, p̂_j scaled by F^{1/3}, p̂
+//!    rescaled so the strips carry N_k exactly, Kalker's C_ij at the local ellipse n_j/m_j:
+//!    Ayasse–Chollet).
 //! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_trig`]), the frame's
 //!    reference point moved along x by the pose's yaw (first order; the table is built at yaw 0).
 //!    Contact angle, yaw and roll enter through their sines and cosines by series
@@ -24,8 +28,8 @@
 //! **Two entry points, one computation.** The normal–tangential coupling (steps 2–5, through
 //! r_k) runs [`COLD_ROUNDS`] = 2 rounds from r_k = 0 in [`step`], for a single state or the first
 //! step of a loop; [`step_from`], the step of a time loop, runs one round from the ratios of the
-//! wheel's previous result. A third round moves the forces by at most 1.7e-4 of μF_z, and along
-//! 1 kHz series the one-step lag of [`step_from`] stays below 0.2 % of μF_z (host-tests
+//! wheel's previous result. A third round moves the forces by at most 1.6e-3 of μF_z, and along
+//! 1 kHz series the one-step lag of [`step_from`] stays below 0.3 % of μF_z (host-tests
 //! `realtime_loop`).
 //!
 //! **Constant cost.** Every loop runs over the table's slots and strips and the fixed counts
@@ -37,10 +41,11 @@
 //! case is the typical case, and a table with more slots costs proportionally more.
 //!
 //! What it neglects against [`crate::wheel::solve_wheel`] (its table was built by it): the
-//! geometry's dependence on yaw and on a roll that differs from the table's (the creepages use
-//! the actual pose), the cell grid of FaStrip (closed form, see [`strip_forces`] for the
-//! differences), and interpolation between nodes. Measured against the converged solver in
-//! host-tests `realtime_step`.
+//! geometry's dependence on yaw, the part of a roll other than the table's that the roll mapping
+//! does not hold (it keeps the node's wheel point and patch; where the contact jumps or the rail's
+//! curvature changes under the patch the rolled contact differs), the cell grid of FaStrip
+//! (closed form, see [`strip_forces`] for the differences), and interpolation between nodes.
+//! Measured against the converged solver in host-tests `realtime_step`.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
@@ -52,7 +57,7 @@ use crate::kalker::KalkerCoefficients;
 use crate::math::{self, c};
 use crate::patch::{CellSink, Flexibilities, SemiEllipticStrips, StripPatch};
 use crate::patch::{Creepage, Strip};
-use crate::table::{ContactTable, SlotField, DY_HALVINGS, NODE_FIXED, SLOT_FIXED};
+use crate::table::{ContactTable, NodeField, SlotField, DY_HALVINGS, SLOT_FIXED};
 use crate::wear::{StripWear, WearMap};
 use crate::wheel::pipeline::RegionSink;
 use crate::{Material, Real};
@@ -117,47 +122,88 @@ pub struct StepInput<T> {
     pub mu: T,
 }
 
-/// Shift interval of the table at dy: nodes `i`, `i` + 1 and the weight of `i` + 1.
+/// Shift interval of the table at dy: nodes `i`, `i` + 1 and the weight of `i` + 1; the
+/// interpolated shift `dy` and roll `roll` of the table there.
 #[derive(Clone, Copy)]
 struct Shift<T> {
     i: usize,
     f: T,
+    dy: T,
+    roll: T,
 }
 
-/// Locates dy among the table's shift nodes by a binary search of a fixed [`DY_HALVINGS`]
-/// halvings (⌈log₂⌉ of the largest node count: every table and shift takes the same count).
-fn shift<T: Real>(t: &ContactTable<'_, T>, dy: T) -> Result<Shift<T>, Error> {
-    let n = t.header.n_dy;
-    let (d0, d1) = (t.dy_node(0), t.dy_node(n - 1));
-    if !(dy >= d0 && dy <= d1) {
+/// Locates the table's shift interval for the pose by a binary search of a fixed
+/// [`DY_HALVINGS`] halvings (⌈log₂⌉ of the largest node count: every table and shift takes the
+/// same count). Roll mapping (module docs): the table point (d, θ(d)) equivalent to the pose
+/// (dy, θ) is the root of h(d) = d − dy − c₁(d) Δθ − c₂(d) Δθ², Δθ = θ − θ(d), c₁, c₂ the
+/// node's equivalent shift per roll (at the load nodes around `fz`, linear in ln F), θ(d) its
+/// roll; h is searched at the nodes, linear between them. A pose at the table's roll is located
+/// at its dy. Both dy and the root must lie inside the table.
+fn shift<T: Real>(
+    t: &ContactTable<'_, T>,
+    pose: &WheelsetPose<T>,
+    fz: T,
+) -> Result<Shift<T>, Error> {
+    let h = &t.header;
+    let n = h.n_dy;
+    // the load nodes around fz (clamped to the table)
+    let (f0, f1) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
+    let uj =
+        math::ln(math::clamp(fz, f0, f1) / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
+    let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
+    let fj = uj - j;
+    let j = j.to_f64() as usize;
+    let roll_v = NodeField::Roll as usize;
+    let at_f = |i: usize, v: usize| t.value(i, j, v) * (T::ONE - fj) + t.value(i, j + 1, v) * fj;
+    let hd = |i: usize| {
+        let (c1, c2) = (
+            at_f(i, NodeField::ShiftPerRoll as usize),
+            at_f(i, NodeField::ShiftPerRoll2 as usize),
+        );
+        let d = pose.roll - t.value(i, 0, roll_v);
+        t.dy_node(i) - pose.dy - d * (c1 + c2 * d)
+    };
+    // the shift itself and its equivalent at the table's roll both inside the table
+    let (h0, h1) = (hd(0), hd(n - 1));
+    let inside = pose.dy >= t.dy_node(0) && pose.dy <= t.dy_node(n - 1);
+    if !(inside && h0 <= T::ZERO && h1 >= T::ZERO) {
         return Err(Error::OutOfRange("lateral shift outside the contact table"));
     }
-    // invariant: node(lo) ≤ dy, and dy < node(hi) or hi = n − 1; lo < hi
+    // invariant: h(lo) ≤ 0, and h(hi) > 0 or hi = n − 1; lo < hi
     let (mut lo, mut hi) = (0usize, n - 1);
     for _ in 0..DY_HALVINGS {
         let mid = (lo + hi) / 2;
-        if t.dy_node(mid) <= dy {
+        if hd(mid) <= T::ZERO {
             lo = mid;
         } else {
             hi = mid;
         }
     }
     let i = lo.min(n - 2);
-    let (a, b) = (t.dy_node(i), t.dy_node(i + 1));
+    let (a, b) = (hd(i), hd(i + 1));
     let f = if b > a {
-        math::clamp((dy - a) / (b - a), T::ZERO, T::ONE)
+        math::clamp(-a / (b - a), T::ZERO, T::ONE)
     } else {
         T::ZERO
     };
-    Ok(Shift { i, f })
+    let lerp = |x: T, y: T| x + (y - x) * f;
+    Ok(Shift {
+        i,
+        f,
+        dy: lerp(t.dy_node(i), t.dy_node(i + 1)),
+        roll: lerp(t.value(i, 0, roll_v), t.value(i + 1, 0, roll_v)),
+    })
 }
 
-/// Corner weights of the table cell at (dy, F).
+/// Corner weights of the table cell at (dy, F): bilinear (`w`, load nodes `j`, `j` + 1) and,
+/// for the frame, linear in dy × quadratic in ln F (`q`, load nodes `j2` … `j2` + 2).
 #[derive(Clone, Copy)]
 struct Cell<T> {
     i: usize,
     j: usize,
     w: [T; 4],
+    j2: usize,
+    q: [T; 6],
 }
 
 fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>, Error> {
@@ -170,14 +216,36 @@ fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>,
     let uj = math::ln(f / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
     let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
     let fj = uj - j;
+    // the frame's quadratic in ln F through the three load nodes around F (Lagrange; a table of
+    // two load nodes: linear)
+    let (j2, l) = if h.n_load >= 3 {
+        let j2 = math::clamp(
+            math::floor(uj + T::HALF) - T::ONE,
+            T::ZERO,
+            T::from_usize(h.n_load - 3),
+        );
+        let t = uj - j2;
+        let (t1, t2) = (t - T::ONE, t - T::TWO);
+        (
+            j2.to_f64() as usize,
+            [t1 * t2 * T::HALF, -t * t2, t * t1 * T::HALF],
+        )
+    } else {
+        (0, [T::ONE - fj, fj, T::ZERO])
+    };
+    let g = T::ONE - fi;
     Ok(Cell {
         i: s.i,
         j: j.to_f64() as usize,
-        w: [
-            (T::ONE - fi) * (T::ONE - fj),
-            (T::ONE - fi) * fj,
-            fi * (T::ONE - fj),
-            fi * fj,
+        w: [g * (T::ONE - fj), g * fj, fi * (T::ONE - fj), fi * fj],
+        j2,
+        q: [
+            g * l[0],
+            g * l[1],
+            g * l[2],
+            fi * l[0],
+            fi * l[1],
+            fi * l[2],
         ],
     })
 }
@@ -188,6 +256,17 @@ fn at<T: Real>(t: &ContactTable<'_, T>, c: &Cell<T>, v: usize) -> T {
         + c.w[1] * t.value(c.i, c.j + 1, v)
         + c.w[2] * t.value(c.i + 1, c.j, v)
         + c.w[3] * t.value(c.i + 1, c.j + 1, v)
+}
+
+/// Value `v` at the cell with the frame's weights (quadratic in ln F): the frame moves smoothly
+/// but not linearly with the load (the reference point of a conformal patch).
+#[inline]
+fn at_frame<T: Real>(t: &ContactTable<'_, T>, c: &Cell<T>, v: usize) -> T {
+    let mut x = T::ZERO;
+    for (m, &q) in c.q.iter().enumerate() {
+        x += q * t.value(c.i + m / 3, c.j2 + m % 3, v);
+    }
+    x
 }
 
 /// cos δ + r e, the vertical load per unit normal load of a patch at the contact angle δ
@@ -248,7 +327,7 @@ pub fn step<T: Real, const K: usize, const ST: usize>(
 /// ratios r_k = F_y,k/N_k of `previous`, this wheel's result of the previous time step (from
 /// [`step`] or [`step_from`] on the same table). At a fixed state this gives exactly the result
 /// of [`step`] when `previous` is [`step`]'s first round; along a time series the ratios lag by
-/// one step (host-tests `realtime_loop`: below 0.2 % of μF_z at 1 kHz for hunting at 3 Hz over
+/// one step (host-tests `realtime_loop`: below 0.3 % of μF_z at 1 kHz for hunting at 3 Hz over
 /// tread and flange and for a 50 % load step). Its cost is one round: half of [`step`]'s.
 ///
 /// Errors: as [`step`], and `NonFinite("previous step result")` for a previous result with a
@@ -446,6 +525,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         return Err(Error::OutOfRange("yaw beyond 0.1 rad"));
     }
     check_finite(pose.roll, "roll")?;
+    if !(math::abs(pose.roll) <= c::<T>(0.1)) {
+        return Err(Error::OutOfRange("roll beyond 0.1 rad"));
+    }
     let h = table.header;
     if h.slots > K || h.strips > ST {
         return Err(Error::OutOfRange(
@@ -474,8 +556,16 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         roll: math::sin_cos_small(pose.roll),
     };
     let sin_yaw = trig.yaw.0;
-    // 1. the shift interval (the same for every round and balance step)
-    let sh = shift(table, pose.dy)?;
+    // 1. the shift interval (the same for every round and balance step) and the roll relative
+    // to the table's there: the wheel turns by it about the axle, the contact normal with it
+    let sh = shift(table, &pose, fz)?;
+    let d_roll = pose.roll - sh.roll;
+    let (sin_r, cos_r) = math::sin_cos_small(d_roll);
+    // the contact angle turns with the wheel: + left, − right (normal (∓ sin δ, cos δ))
+    let (d_angle, n_sign) = match side {
+        Side::Right => (-d_roll, T::ONE),
+        Side::Left => (d_roll, -T::ONE),
+    };
     for round in 0..rounds {
         let last = round + 1 == rounds;
         // 2. vertical balance
@@ -486,11 +576,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
                 let share = at(table, &c, o + SlotField::Share as usize);
-                // a slot without a patch here adds exactly 0: skip its trigonometry
-                if share != T::ZERO {
-                    let ang = at(table, &c, o + SlotField::Angle as usize);
-                    sum += share * vertical(side, math::sin_cos_small(ang), *r);
-                }
+                // (a slot without a patch here adds exactly 0)
+                let ang = at_frame(table, &c, o + SlotField::Angle as usize) + d_angle;
+                sum += share * vertical(side, math::sin_cos_small(ang), *r);
             }
             if !(sum > T::ZERO) {
                 return Err(Error::NoContact);
@@ -504,23 +592,43 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         let c = cell(table, &sh, f)?;
         let f13 = math::cbrt(f);
         let f23 = f13 * f13;
-        let cz = at(table, &c, 1);
-        let dv = at(table, &c, 2) * f23;
+        let cz = at_frame(table, &c, NodeField::CentreHeight as usize);
+        let dv = at_frame(table, &c, NodeField::Approach as usize) * f23;
         out.vertical_approach = dv;
         let mut vload = T::ZERO;
         for (k, slot) in out.slots.iter_mut().enumerate().take(ks) {
             let o = table.slot_offset(k);
             let fld = |q: SlotField| at(table, &c, o + q as usize);
+            let frm = |q: SlotField| at_frame(table, &c, o + q as usize);
             let load = fld(SlotField::Share) * f;
-            let angle = fld(SlotField::Angle);
+            let angle_t = frm(SlotField::Angle);
+            let angle = angle_t + d_angle;
+            // 3a. Roll relative to the table's (module docs): the same wheel point, the rail
+            // point turned about the rail's centre of curvature, the wheel's arm to it about the
+            // axle
+            let (y_t, z_t) = (frm(SlotField::YRefTrack), frm(SlotField::ZRefTrack));
+            let (ay, az) = (y_t - sh.dy, z_t - cz);
+            let (ay, az) = (ay * cos_r - az * sin_r, ay * sin_r + az * cos_r);
+            let (s_t, c_t) = math::sin_cos_small(angle_t);
+            // sin, cos of angle = angle_t + d_angle, d_angle = −n_sign · d_roll
+            let (s_a, c_a) = (
+                s_t * cos_r - n_sign * c_t * sin_r,
+                c_t * cos_r + n_sign * s_t * sin_r,
+            );
+            // the rail point at the turned angle: lateral by the table's fit, vertical along the
+            // surface (slope −n_sign tan of the mean angle)
+            let dy_rail =
+                d_angle * (fld(SlotField::RailShift) + d_angle * fld(SlotField::RailShift2));
+            let z_ref = z_t - dy_rail * n_sign * (s_t + s_a) / (c_t + c_a);
+            let cz_k = z_ref - az;
             *slot = SlotResult {
                 load,
                 angle,
-                rolling_radius: fld(SlotField::RollingRadius),
-                y_ref_rail: fld(SlotField::YRefRail),
-                x_ref: fld(SlotField::XRef),
-                y_ref_track: fld(SlotField::YRefTrack),
-                z_ref_track: fld(SlotField::ZRefTrack),
+                rolling_radius: frm(SlotField::RollingRadius),
+                y_ref_rail: frm(SlotField::YRefRail) + side.sign::<T>() * dy_rail,
+                x_ref: frm(SlotField::XRef),
+                y_ref_track: pose.dy + ay,
+                z_ref_track: z_ref,
                 pmax: fld(SlotField::Pmax) * f13,
                 area: fld(SlotField::Area) * f23,
                 ..SlotResult::default()
@@ -535,12 +643,11 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             // converged geometry (S1002/UIC60, dy 0 … −7.5 mm, ψ ±3 and −10 mrad): the shift is
             // 2.25 mm at 3 mrad, this form within 0.5 % of it; without it η is off by
             // ψ (r_y/R) sin δ, 16 % of η in flange contact.
-            let sc = math::sin_cos_small(angle);
+            let sc = (s_a, c_a);
             let cr = if loaded {
-                let (s_ang, c_ang) = sc;
                 let lead = match side {
-                    Side::Right => slot.rolling_radius * s_ang / c_ang,
-                    Side::Left => -slot.rolling_radius * s_ang / c_ang,
+                    Side::Right => slot.rolling_radius * s_a / c_a,
+                    Side::Left => -slot.rolling_radius * s_a / c_a,
                 };
                 let x_ref = slot.x_ref - sin_yaw * (slot.y_ref_track - pose.dy) - pose.yaw * lead;
                 slot.x_ref = x_ref;
@@ -557,12 +664,12 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
                     rolling_radius: slot.rolling_radius,
                     weight: T::ZERO,
                     approach_vertical: dv,
-                    approach: fld(SlotField::Approach) * f23,
+                    approach: frm(SlotField::Approach) * f23,
                     overlap_y: [T::ZERO; 2],
                     overlap_s: [T::ZERO; 2],
                     components: 1,
                 };
-                let cr = creepages_trig(&pose, &trig, side, cz, &frame, sc, &input.kinematics)?;
+                let cr = creepages_trig(&pose, &trig, side, cz_k, &frame, sc, &input.kinematics)?;
                 Creepage {
                     xi: cr.xi,
                     eta: cr.eta,
@@ -636,6 +743,5 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         }
         out.vertical_load = vload;
     }
-    let _ = NODE_FIXED;
     Ok(out)
 }
