@@ -272,6 +272,11 @@ pub struct SweepArgs {
     /// Write SVG plots into this directory.
     #[arg(long)]
     pub plot: Option<PathBuf>,
+    /// Run the fixed-cost real-time step on this contact table (built by `wrc table`) at every
+    /// shift instead of the six converged models; the options the table fixes must agree with it
+    /// or be omitted (as for `wrc solve --table`).
+    #[arg(long)]
+    pub table: Option<PathBuf>,
     /// The long names of the options given on the command line (filled in by `main`).
     #[arg(skip)]
     pub given: Vec<String>,

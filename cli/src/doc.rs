@@ -125,6 +125,10 @@ pub struct Total {
 /// Solver status.
 #[derive(Clone, Debug, Default, Serialize, PartialEq)]
 pub struct Status {
+    /// Which computation ran: `"converged"` (a wheel/rail case through the iterative per-wheel
+    /// solve, with whatever normal and tangential models), `"realtime"` (the fixed-cost step on a
+    /// contact table, `--table`) or `"elliptic"` (an elliptic case).
+    pub path: &'static str,
     /// Every iterative stage converged.
     pub converged: bool,
     /// Iterations of the outermost iterative stage.

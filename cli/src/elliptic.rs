@@ -204,6 +204,7 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
         patch,
         cells: sink.cells,
         status: Status {
+            path: "elliptic",
             converged: true,
             iterations: 0,
             warnings: vec![],
@@ -360,6 +361,7 @@ fn solve_norm<T: Real, const S: usize, const C: usize>(
         patch: patch_doc,
         cells: sink.cells,
         status: Status {
+            path: "elliptic",
             converged: sol.converged,
             iterations: sol.iterations as u32,
             warnings,

@@ -224,6 +224,7 @@ pub fn solve(
     ExactPatch {
         patch,
         status: Status {
+            path: "elliptic",
             converged: sol.converged,
             iterations: sol.sweeps as u32,
             warnings,

@@ -299,8 +299,8 @@ fn table(d: &Document) -> String {
     let t = &d.total;
     writeln!(
         s,
-        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; converged {}, kernel time {:.1} µs",
-        t.fn_n, t.fx_n, t.fy_n, t.mz_nmm, d.status.converged, d.time_us
+        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; {} path, converged {}, kernel time {:.1} µs",
+        t.fn_n, t.fx_n, t.fy_n, t.mz_nmm, d.status.path, d.status.converged, d.time_us
     )
     .ok();
     s

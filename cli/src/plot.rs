@@ -647,6 +647,13 @@ pub fn sweep_plots(
         RGBColor(0x8c, 0x56, 0x4b),
     ];
     for (name, what, ylab, q) in quantities.iter() {
+        // a quantity no series computes (the real-time step's adhesion fraction) is not drawn
+        if !series
+            .iter()
+            .any(|s| s.1.iter().any(|p| q(&p.1).is_finite()))
+        {
+            continue;
+        }
         let file = dir.join(name);
         let root = SVGBackend::new(&file, (860, 520)).into_drawing_area();
         root.fill(&WHITE).map_err(err)?;

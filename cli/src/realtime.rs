@@ -1,11 +1,12 @@
 //! `wrc table` (build a contact table for the real-time step) and `wrc solve --table FILE` (run the
 //! fixed-cost step on it). Contract: docs/cli.md; the byte format: docs/realtime.md.
 
-use crate::args::{Precision, Side as ArgSide, SolveArgs, TableArgs, WheelRail};
+use crate::args::{Precision, Side as ArgSide, SolveArgs, SweepArgs, TableArgs, WheelRail};
 use crate::timing::median_time_us;
 use crate::wheelrail::{profile_name, table as profile_table, NODES};
 use serde_json::json;
 use std::fmt::Write as _;
+use std::path::Path;
 use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelsetPose};
 use wrc_kernel::profile::ProfileKind;
 use wrc_kernel::step::{step, StepInput, StepResult};
@@ -191,19 +192,8 @@ fn file_precision(bytes: &[u8]) -> Option<Precision> {
 /// a table on stdout.
 pub fn solve(a: &SolveArgs) -> Result<(), String> {
     let path = a.table.as_deref().ok_or("--table FILE is required here")?;
-    let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
-    if bytes.len() < HEADER_BYTES {
-        return Err(format!(
-            "{}: not a contact table (too short)",
-            path.display()
-        ));
-    }
-    let doc = match file_precision(&bytes) {
-        Some(Precision::F64) => solve_in::<f64>(a, &bytes),
-        Some(Precision::F32) => solve_in::<f32>(a, &bytes),
-        None => Err("not a contact table (precision field)".into()),
-    }
-    .map_err(|e| format!("{}: {e}", path.display()))?;
+    let bytes = read_table(path)?;
+    let doc = run_on(a, &bytes).map_err(|e| format!("{}: {e}", path.display()))?;
     if a.json {
         crate::out(&format!(
             "{}\n",
@@ -212,6 +202,189 @@ pub fn solve(a: &SolveArgs) -> Result<(), String> {
     } else {
         crate::out(&text(&doc))
     }
+}
+
+/// The bytes of a table file (at least a header long).
+fn read_table(path: &Path) -> Result<Vec<u8>, String> {
+    let bytes = std::fs::read(path).map_err(|e| format!("{}: cannot read: {e}", path.display()))?;
+    if bytes.len() < HEADER_BYTES {
+        return Err(format!(
+            "{}: not a contact table (too short)",
+            path.display()
+        ));
+    }
+    Ok(bytes)
+}
+
+/// The real-time step of `a`'s state on the table `bytes`, in the table's precision: the JSON
+/// document of `wrc solve --table`.
+fn run_on(a: &SolveArgs, bytes: &[u8]) -> Result<serde_json::Value, String> {
+    match file_precision(bytes) {
+        Some(Precision::F64) => solve_in::<f64>(a, bytes),
+        Some(Precision::F32) => solve_in::<f32>(a, bytes),
+        None => Err("not a contact table (precision field)".into()),
+    }
+}
+
+/// `wrc sweep --table FILE`: the real-time step at every shift of the sweep (yaw `yaw_of(dy)`
+/// mrad), printed as the sweep's table (model `realtime`), or as a JSON array of `wrc solve
+/// --table` documents, CSV and plots as the converged sweep writes them (no adhesion fraction
+/// or wear: the step computes none).
+pub fn sweep(
+    a: &SweepArgs,
+    path: &Path,
+    shifts: &[f64],
+    yaw_of: &dyn Fn(f64) -> f64,
+) -> Result<(), String> {
+    let bytes = read_table(path)?;
+    // the sweep's own options are not the solve's
+    let own = [
+        "dy", "dy-from", "dy-to", "dy-step", "csv", "plot", "json", "table",
+    ];
+    let given: Vec<String> = a
+        .given
+        .iter()
+        .filter(|g| !own.contains(&g.as_str()))
+        .cloned()
+        .collect();
+    let mut docs = vec![];
+    for &dy in shifts {
+        let mut wr = a.wr.clone();
+        wr.dy = dy;
+        wr.yaw = yaw_of(dy);
+        let sa = SolveArgs {
+            ellipse: None,
+            curvatures: None,
+            fn_n: None,
+            approach: None,
+            wr,
+            common: a.common.clone(),
+            json: a.json,
+            plot: None,
+            plot_reference: false,
+            table: Some(path.to_path_buf()),
+            given: given.clone(),
+        };
+        if docs.is_empty() {
+            crate::validate::check_solve(&sa)?;
+        }
+        let d =
+            run_on(&sa, &bytes).map_err(|e| format!("{}: dy = {dy} mm: {e}", path.display()))?;
+        docs.push((dy, d));
+    }
+    let f = |p: &serde_json::Value, k: &str| p[k].as_f64().unwrap_or(f64::NAN);
+    let cr = |p: &serde_json::Value, k: &str| p["creepage"][k].as_f64().unwrap_or(f64::NAN);
+    if let Some(file) = &a.csv {
+        let mut csv = String::from(crate::sweep::CSV_HEADER);
+        for (dy, d) in &docs {
+            for (pi, p) in d["patches"].as_array().into_iter().flatten().enumerate() {
+                let _ = writeln!(
+                    csv,
+                    "{dy},{},fastrip,ac,{pi},{},{},{},{},{},{},{},{},{},{},{},,,true,{},realtime",
+                    yaw_of(*dy),
+                    f(p, "y_ref_mm"),
+                    f(p, "contact_angle_rad"),
+                    cr(p, "xi"),
+                    cr(p, "eta"),
+                    cr(p, "phi_per_mm"),
+                    f(p, "fn_n"),
+                    f(p, "fx_n"),
+                    f(p, "fy_n"),
+                    f(p, "mz_nmm"),
+                    f(p, "pmax_mpa"),
+                    f(p, "area_mm2"),
+                    f(d, "time_us"),
+                );
+            }
+        }
+        std::fs::write(file, csv).map_err(|e| format!("{}: {e}", file.display()))?;
+    }
+    if let Some(dir) = &a.plot {
+        let series: Vec<(f64, crate::doc::Document)> = docs
+            .iter()
+            .map(|(dy, d)| {
+                let patches = d["patches"]
+                    .as_array()
+                    .into_iter()
+                    .flatten()
+                    .map(|p| crate::doc::Patch {
+                        y_ref_mm: f(p, "y_ref_mm"),
+                        contact_angle_rad: f(p, "contact_angle_rad"),
+                        creepage: crate::doc::Creepage {
+                            xi: cr(p, "xi"),
+                            eta: cr(p, "eta"),
+                            phi_per_mm: cr(p, "phi_per_mm"),
+                        },
+                        fn_n: f(p, "fn_n"),
+                        fx_n: f(p, "fx_n"),
+                        fy_n: f(p, "fy_n"),
+                        mz_nmm: f(p, "mz_nmm"),
+                        pmax_mpa: f(p, "pmax_mpa"),
+                        area_mm2: f(p, "area_mm2"),
+                        stick_area_fraction: f64::NAN,
+                        wear_depth_max_um: f64::NAN,
+                        ..Default::default()
+                    })
+                    .collect();
+                let status = crate::doc::Status {
+                    path: "realtime",
+                    converged: true,
+                    iterations: wrc_kernel::step::COLD_ROUNDS as u32,
+                    warnings: vec![],
+                };
+                let doc = crate::doc::Document::new(
+                    d["inputs"].clone(),
+                    patches,
+                    status,
+                    f(d, "time_us"),
+                );
+                (*dy, doc)
+            })
+            .collect();
+        let yaw = if a.given.iter().any(|g| g == "yaw") {
+            format!("yaw {} mrad", a.wr.yaw)
+        } else {
+            "yaw 1.2·dy mrad".to_string()
+        };
+        let case = format!(
+            "real-time step on {}, F_z {} N, {yaw}",
+            path.file_name().unwrap_or_default().to_string_lossy(),
+            a.wr.fz
+        );
+        crate::plot::sweep_plots(dir, &case, &[("realtime".to_string(), series)])?;
+    }
+    if a.json {
+        let all: Vec<&serde_json::Value> = docs.iter().map(|d| &d.1).collect();
+        return crate::out(&format!(
+            "{}\n",
+            serde_json::to_string_pretty(&all).map_err(|e| e.to_string())?
+        ));
+    }
+    let mut s = crate::sweep::table_header();
+    let mut times = vec![];
+    for (dy, d) in &docs {
+        times.push(f(d, "time_us"));
+        for p in d["patches"].as_array().into_iter().flatten() {
+            let _ = writeln!(
+                s,
+                "{:>6.2} {:>14} {:>8.3} {:>8.5} {:>9.2e} {:>9.2e} {:>9.2e} {:>10.1} {:>10.1} {:>11.1} {:>8.1} {:>8.2} {:>6}",
+                dy, "realtime", f(p, "y_ref_mm"), f(p, "contact_angle_rad"),
+                cr(p, "xi"), cr(p, "eta"), cr(p, "phi_per_mm"),
+                f(p, "fn_n"), f(p, "fx_n"), f(p, "fy_n"), f(p, "pmax_mpa"), f(p, "area_mm2"), "-"
+            );
+        }
+    }
+    times.sort_by(f64::total_cmp);
+    let _ = writeln!(
+        s,
+        "realtime path: the fixed-cost step on {} (FaStrip-AC per strip on the table's STRIPES \
+         strips); step time median {:.2} µs, max {:.2} µs over {} shifts",
+        path.display(),
+        times[times.len() / 2],
+        times[times.len() - 1],
+        times.len()
+    );
+    crate::out(&s)
 }
 
 /// Checks that the options the table fixes agree with it.

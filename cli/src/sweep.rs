@@ -64,7 +64,31 @@ fn models(a: &SweepArgs) -> Result<Vec<(Tangential, Flex)>, String> {
         .collect())
 }
 
-/// Runs the sweep and prints/writes its outputs.
+/// The CSV header of the sweep (one row per shift, model and patch).
+pub const CSV_HEADER: &str = "dy_mm,yaw_mrad,tangential,flex,patch,y_ref_mm,contact_angle_rad,xi,eta,phi_per_mm,fn_n,fx_n,fy_n,mz_nmm,pmax_mpa,area_mm2,stick_area_fraction,wear_depth_max_um,converged,time_us,model\n";
+
+/// The header line of the sweep's table on stdout.
+pub fn table_header() -> String {
+    format!(
+        "{:>6} {:>14} {:>8} {:>8} {:>9} {:>9} {:>9} {:>10} {:>10} {:>11} {:>8} {:>8} {:>6}\n",
+        "dy",
+        "model",
+        "y_ref",
+        "angle",
+        "xi",
+        "eta",
+        "phi",
+        "Fn",
+        "Fx",
+        "Fy",
+        "pmax",
+        "area",
+        "stick"
+    )
+}
+
+/// Runs the sweep and prints/writes its outputs (`--table`: the real-time step instead of the
+/// six converged models).
 pub fn run(a: &SweepArgs) -> Result<(), String> {
     let has = |f: &str| a.given.iter().any(|g| g == f);
     let (dy_from, dy_to, dy_step) = if has("dy") {
@@ -89,36 +113,22 @@ pub fn run(a: &SweepArgs) -> Result<(), String> {
     if n > 10_000 {
         return Err("more than 10000 shifts".into());
     }
+    let shifts: Vec<f64> = (0..n).map(|k| dy_from + k as f64 * dy_step).collect();
+    // yaw: 1.2 mrad per mm of shift (An et al. 2019) unless --yaw fixes it
+    let yaw_of = |dy: f64| if has("yaw") { a.wr.yaw } else { 1.2 * dy };
+    if let Some(t) = &a.table {
+        return crate::realtime::sweep(a, t, &shifts, &yaw_of);
+    }
     let models = models(a)?;
     if models.is_empty() {
         return Err("no model of the sweep matches --tangential and --flex".into());
     }
-    // yaw: 1.2 mrad per mm of shift (An et al. 2019) unless --yaw fixes it
-    let yaw_of = |dy: f64| if has("yaw") { a.wr.yaw } else { 1.2 * dy };
     let mut table = String::new();
-    let mut csv = String::from("dy_mm,yaw_mrad,tangential,flex,patch,y_ref_mm,contact_angle_rad,xi,eta,phi_per_mm,fn_n,fx_n,fy_n,mz_nmm,pmax_mpa,area_mm2,stick_area_fraction,wear_depth_max_um,converged,time_us,model\n");
-    writeln!(
-        table,
-        "{:>6} {:>14} {:>8} {:>8} {:>9} {:>9} {:>9} {:>10} {:>10} {:>11} {:>8} {:>8} {:>6}",
-        "dy",
-        "model",
-        "y_ref",
-        "angle",
-        "xi",
-        "eta",
-        "phi",
-        "Fn",
-        "Fx",
-        "Fy",
-        "pmax",
-        "area",
-        "stick"
-    )
-    .ok();
+    let mut csv = String::from(CSV_HEADER);
+    table.push_str(&table_header());
     let mut docs = vec![];
     let mut series: Vec<(String, Vec<(f64, Document)>)> = vec![];
-    for k in 0..n {
-        let dy = dy_from + k as f64 * dy_step;
+    for (k, &dy) in shifts.iter().enumerate() {
         for (mi, &(tang, flex)) in models.iter().enumerate() {
             let mut wr = a.wr.clone();
             wr.dy = dy;

@@ -361,6 +361,7 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         patches,
         cells: stats.cells,
         status: Status {
+            path: "converged",
             converged: res.converged,
             iterations: res.iterations,
             warnings,
@@ -589,6 +590,7 @@ fn solve_exact(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
         patches,
         cells,
         status: Status {
+            path: "converged",
             converged,
             iterations: sweeps,
             warnings,

@@ -167,6 +167,7 @@ pub fn solve_norm<T: Real>(args: &SolveArgs, keep: bool) -> Result<Solved, Strin
         patches,
         cells,
         status: Status {
+            path: "converged",
             converged,
             iterations,
             warnings,
@@ -364,6 +365,7 @@ pub fn solve_hertz<T: Real, const C: usize>(
         patches,
         cells,
         status: Status {
+            path: "converged",
             converged: kernel_ok,
             iterations: 0,
             warnings,

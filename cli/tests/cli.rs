@@ -1073,6 +1073,59 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
         "--json",
     ]);
     assert_eq!(r32["inputs"]["precision"], "f32");
+    // `wrc sweep --table`: the real-time step at every shift (yaw 1.2·dy mrad), the same
+    // numbers as `wrc solve --table` at that state, and the converged path says which it is
+    let sw = json(&[
+        "sweep",
+        "--table",
+        ts,
+        "--dy-from",
+        "0",
+        "--dy-to",
+        "2",
+        "--dy-step",
+        "1",
+        "--json",
+    ]);
+    let sw = sw.as_array().expect("an array of documents");
+    assert_eq!(sw.len(), 3);
+    for (k, d) in sw.iter().enumerate() {
+        assert_eq!(d["status"]["path"], "realtime");
+        let dy = k.to_string();
+        let yaw = format!("{}", 1.2 * k as f64);
+        let one = json(&["solve", "--table", ts, "--dy", &dy, "--yaw", &yaw, "--json"]);
+        for q in ["fn_n", "fx_n", "fy_n", "mz_nmm"] {
+            assert_eq!(d["total"][q], one["total"][q], "dy {dy}: {q}");
+        }
+    }
+    let cv = json(&["solve", "--back-to-back", "1353", "--dy", "1", "--json"]);
+    assert_eq!(cv["status"]["path"], "converged");
+    let csv = d.join("sweep.csv");
+    let o = wrc(&[
+        "sweep",
+        "--table",
+        ts,
+        "--dy",
+        "1",
+        "--csv",
+        csv.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(text.contains("realtime path"), "{text}");
+    let rows = std::fs::read_to_string(&csv).unwrap();
+    assert_eq!(rows.lines().count(), 2, "{rows}");
+    assert!(
+        rows.lines().nth(1).unwrap().ends_with(",realtime"),
+        "{rows}"
+    );
+    let e = fails_with(&["sweep", "--table", ts, "--flex", "kp"]);
+    assert!(e.contains("--flex is fixed by the table"), "{e}");
+    let e = fails_with(&["sweep", "--table", ts, "--dy-from", "0", "--dy-to", "5"]);
+    assert!(
+        e.contains("dy = 4 mm") && e.contains("-1 … 3 mm towards the wheel"),
+        "{e}"
+    );
     let e = fails_with(&["table", "--dy", "2", "--out", ts]);
     assert!(e.contains("no effect on `wrc table`"), "{e}");
     // the default shift range: both flange contacts (S1002/UIC60 1353 mm at the equilibrium
