@@ -329,7 +329,7 @@ pub fn sweep(
                 let status = crate::doc::Status {
                     path: "realtime",
                     converged: true,
-                    iterations: wrc_kernel::step::COLD_ROUNDS as u32,
+                    iterations: wrc_kernel::step::COLD_ROUNDS,
                     warnings: vec![],
                 };
                 let doc = crate::doc::Document::new(
