@@ -5,9 +5,14 @@
 //! at 100 km/h plus a lateral velocity and yaw rate): median / P99 / max over the states of each
 //! state's fastest of 20 timed calls (the host is shared; the step does the same work every call).
 //!
-//! Run: `cargo run --release -p wrc-bench --example realtime_step`. For instruction counts:
-//! `valgrind --tool=callgrind --toggle-collect='*one_step*' target/release/examples/realtime_step`
-//! and divide the total by the steps printed.
+//! Run: `cargo run --release -p wrc-bench --example realtime_step [f64|f32]` (both by default;
+//! `WRC_REPEAT=n` times each state n times instead of 20). For instruction counts, per step and
+//! per stage: `WRC_REPEAT=1 valgrind --tool=callgrind --callgrind-out-file=rt.cg
+//! --toggle-collect='*warm_step*' target/release/examples/realtime_step f64` (1000 time-loop
+//! steps; `*one_step*` for the cold step), then `callgrind_annotate --inclusive=no rt.cg`: the
+//! step's stages are inlined, and callgrind attributes each instruction to the source file it
+//! came from (`fastrip.rs` FaStrip's strip forces, `kalker.rs` the coefficients, `creep.rs` the
+//! creepages, `step.rs`/`table.rs` lookup, interpolation and balance, libm).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -20,8 +25,16 @@ use wrc_kernel::{Material, Real};
 
 const K: usize = 3;
 const ST: usize = 16;
-/// Timings per state (the fastest is kept).
+/// Timings per state (the fastest is kept); `WRC_REPEAT` overrides it.
 const REPEAT: usize = 20;
+
+fn repeat() -> usize {
+    std::env::var("WRC_REPEAT")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or(REPEAT)
+}
 
 /// The cold step ([`step`], two coupling rounds).
 #[inline(never)]
@@ -89,7 +102,7 @@ fn run<T: Real>(name: &str) {
         // each state timed REPEAT times, the fastest kept: the step's own cost, not the shared
         // host's scheduling (the step does the same work every time)
         let (mut tc, mut tw) = (f64::INFINITY, f64::INFINITY);
-        for _ in 0..REPEAT {
+        for _ in 0..repeat() {
             let s = Instant::now();
             let prev = black_box(one_step(&table, black_box(&inp)));
             tc = tc.min(s.elapsed().as_secs_f64() * 1e6);
@@ -121,6 +134,11 @@ fn run<T: Real>(name: &str) {
 }
 
 fn main() {
-    run::<f64>("f64");
-    run::<f32>("f32");
+    let which = std::env::args().nth(1).unwrap_or_default();
+    if which != "f32" {
+        run::<f64>("f64");
+    }
+    if which != "f64" {
+        run::<f32>("f32");
+    }
 }

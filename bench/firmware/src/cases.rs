@@ -11,11 +11,13 @@
 //! the kernel call at build time.
 
 use core::hint::black_box;
-use wrc_kernel::fastrip::{fastrip, FastripSettings, LambdaVariant};
+use wrc_kernel::fastrip::{fastrip, strip_forces, FastripSettings, LambdaVariant};
 use wrc_kernel::fastsim::{fastsim, FastsimSettings};
-use wrc_kernel::geometry::{Kinematics, Side, TrackSetup, WheelRail, WheelsetPose};
+use wrc_kernel::geometry::{
+    creepages_trig, Kinematics, PatchFrame, PoseTrig, Side, TrackSetup, WheelRail, WheelsetPose,
+};
 use wrc_kernel::patch::{
-    CellOut, CellSink, Creepage, Ellipse, GridExtent, HertzPressure, StripPatch, Tangential,
+    CellOut, CellSink, Creepage, Ellipse, GridExtent, HertzPressure, Strip, StripPatch, Tangential,
     TractionBound,
 };
 use wrc_kernel::profile::ProfileTable;
@@ -245,6 +247,7 @@ case_table!(
     wheel_step,
     step_sweep,
     state_sweep,
+    step_stages,
     step_with_cells,
     table_build,
     rejects,
@@ -929,6 +932,130 @@ pub fn state_sweep<T: WheelProfiles, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Re
             "sweep::step"
         });
     }
+    Ok(())
+}
+
+/// Strips of [`step_stages`]' patch: the sweep tables' strips per slot.
+const STAGE_STRIPS: usize = 16;
+
+/// The real-time step's stages one at a time (BENCHMARKS.md, per-stage table), each as a series
+/// over what one round of `step_from` on a one-slot, 16-strip table does:
+/// * `stage::strip_forces`: FaStrip's closed-form strip forces (`fastrip::strip_forces`) on the
+///   16 strips of a Hertzian patch (a = 6, b = 4 mm, 80 kN, steel, ξ = 1e-3, η = 5e-4, φ = 2e-4
+///   1/mm, μ = 0.3; Kalker's coefficients at a/b), one call per strip;
+/// * `stage::kalker`: Kalker's coefficients at the 16 strips' local ellipse ratios (0.5 … 2);
+/// * `stage::creepages_trig`: one slot's creepages from the kinematics (the step's stage 4):
+///   1353 mm, right wheel, tread contact, dy 2 mm, yaw 3 mrad, lateral velocity, yaw rate.
+///
+/// The lookup, the vertical balance and the interpolation are what `step_from` costs beyond
+/// these (`step` − `step_from` is one round, 2 `step_from` − `step` the set-up and shift search).
+/// Per state: the three force sums (relative to μN), the coefficients' sum, the creepages.
+pub fn step_stages<T: Real, M: Meter>(m: &mut M, o: &mut Outs<T>) -> Result<(), Error> {
+    let t = T::from_f64;
+    let mat = Material::<T>::steel();
+    let (a, b, n) = (6.0f64, 4.0f64, 80_000.0f64);
+    let p0 = 1.5 * n / (core::f64::consts::PI * a * b);
+    let w = 2.0 * b / STAGE_STRIPS as f64;
+    let kc = kalker::coefficients(t(a / b), mat.nu)?;
+    let cr = Creepage {
+        xi: t(1e-3),
+        eta: t(5e-4),
+        phi: t(2e-4),
+    };
+    let mu = t(0.3);
+    m.series_begin();
+    let (mut fx, mut fy, mut mz) = (T::ZERO, T::ZERO, T::ZERO);
+    for q in 0..STAGE_STRIPS {
+        let y = -b + (q as f64 + 0.5) * w;
+        let r = math::sqrt(1.0 - (y / b) * (y / b));
+        let s = Strip {
+            y: t(y),
+            dy: t(w),
+            a: t(a * r),
+            xc: T::ZERO,
+            p_hat: t(p0 * r),
+            c11: kc.c11,
+            c22: kc.c22,
+            c23: kc.c23,
+            c33: kc.c33,
+            sqrt_b_over_a: t(math::sqrt(b / a)),
+            ..Strip::default()
+        };
+        let (sx, sy, sm) = m.call("stage::strip_forces", || {
+            strip_forces(black_box(&s), black_box(&cr), mu, mat.g, mat.nu)
+        })?;
+        fx += sx;
+        fy += sy;
+        mz += sm;
+    }
+    m.series_end("stage::strip_forces");
+    let mun = mu * t(n);
+    o.real(fx / mun, FORCE_FLOOR);
+    o.real(fy / mun, FORCE_FLOOR);
+    o.real(mz / (mun * t(math::sqrt(a * b))), FORCE_FLOOR);
+    m.series_begin();
+    let mut sum = T::ZERO;
+    for q in 0..STAGE_STRIPS {
+        let ratio = t(0.5 * math::powf(4.0, q as f64 / (STAGE_STRIPS - 1) as f64));
+        let k = m.call("stage::kalker", || {
+            kalker::coefficients(black_box(ratio), mat.nu)
+        })?;
+        sum += k.c11 + k.c22 + k.c23 + k.c33;
+    }
+    m.series_end("stage::kalker");
+    o.real(sum, 0.0);
+    let pose = WheelsetPose {
+        dy: t(2.0),
+        yaw: t(3e-3),
+        roll: T::ZERO,
+    };
+    let trig = PoseTrig {
+        yaw: math::sin_cos_small(pose.yaw),
+        roll: math::sin_cos_small(pose.roll),
+    };
+    let angle = t(0.0175);
+    let frame = PatchFrame {
+        y_ref_rail: t(-5.5),
+        z_ref_rail: T::ZERO,
+        y_ref_wheel: T::ZERO,
+        z_ref_wheel: T::ZERO,
+        x_ref: t(-1.4),
+        y_ref_track: t(-750.0),
+        z_ref_track: t(0.05),
+        angle,
+        angle_own: angle,
+        rolling_radius: t(458.3),
+        weight: T::ZERO,
+        approach_vertical: t(0.1),
+        approach: t(0.1),
+        overlap_y: [T::ZERO; 2],
+        overlap_s: [T::ZERO; 2],
+        components: 1,
+    };
+    let speed = t(100.0 / 3.6 * 1e3);
+    let kin = Kinematics {
+        lateral_velocity: t(40.0),
+        yaw_rate: t(0.01),
+        ..Kinematics::nominal(speed, t(460.0))
+    };
+    let sc = math::sin_cos_small(angle);
+    m.series_begin();
+    let c = m.call("stage::creepages_trig", || {
+        creepages_trig(
+            black_box(&pose),
+            black_box(&trig),
+            Side::Right,
+            t(459.9),
+            black_box(&frame),
+            sc,
+            &kin,
+        )
+    })?;
+    m.series_end("stage::creepages_trig");
+    // floors at the creepages' own scale (1e-3; spin 1e-5 1/mm): ξ is a difference of radii
+    o.real(c.xi, 1e-3);
+    o.real(c.eta, 1e-3);
+    o.real(c.phi, 1e-5);
     Ok(())
 }
 

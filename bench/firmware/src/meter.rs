@@ -284,6 +284,8 @@ impl Meter for TargetMeter {
         v.sort_unstable();
         // the upper median for an even count, as the host example
         let (median, max) = (v[n / 2], v[n - 1]);
+        // P99 by nearest rank: the ⌈0.99 n⌉-th smallest
+        let p99 = v[(99 * n).div_ceil(100) - 1];
         let stack = ser.max_stack.unwrap_or(WINDOW);
         hprintln!(
             "  meter {} {} (median of {}): {} instructions, {} B stack, code@{:#010x}",
@@ -295,7 +297,7 @@ impl Meter for TargetMeter {
             ser.code
         );
         hprintln!(
-            "  series {} {}: {} calls, median {} / min {} / max {} instructions, max/median {}.{:03}, worst call #{}",
+            "  series {} {}: {} calls, median {} / min {} / max {} instructions, max/median {}.{:03}, P99 {}, worst call #{}",
             self.prefix,
             label,
             n,
@@ -304,6 +306,7 @@ impl Meter for TargetMeter {
             max,
             max / median.max(1),
             (max % median.max(1)) * 1000 / median.max(1),
+            p99,
             worst
         );
     }
