@@ -17,7 +17,8 @@
 //! normal model's error). Measured: sweep pmax 2.08 / 11.09 %, area 3.38 / 10.19 % (STRIPES
 //! 2.11 / 14.16, 3.26 / 10.30 %); band pmax 2.67 / 13.16 %, area 4.74 / 10.29 % (STRIPES 3.07 /
 //! 17.80, 4.74 / 10.53 %). Manchester A-2.2 (10 kN) lies below the tables' load range (15 kN) and
-//! is not run here. Forces against TANG: see the end of the test.
+//! is not run here. Forces against TANG: FaStrip-AC's floored eq. 31 through the step within 0.3
+//! points of the converged pipeline's (measured +0.18).
 
 use wrc_host_tests::realtime::CASES;
 use wrc_host_tests::tangstudy::reference;
@@ -208,13 +209,15 @@ fn step_against_norm_and_tang_on_the_sweep() {
             "{name} area max: step vs STRIPES"
         );
     }
-    // Reported, not asserted (open in issue 14): "the FaStrip-AC figures do not get worse by
-    // more than 0.3 points" measures +0.30 points here (floored eq. 31, 2.65 % against 2.35 %,
-    // four tables), most of it from the 1360 mm two-region states (dy 4.95 … 5.0 mm: tread and
-    // flange root in one slot whose 16 strips span both regions and the gap between them; step
-    // against pipeline 2.6 % of μF_n there, below 1.3 % elsewhere).
+    // Issue 14: "the FaStrip-AC figures do not get worse by more than 0.3 points". Measured
+    // +0.18 points (floored eq. 31, 2.53 % against 2.35 %, four tables) with 16 slip-zone
+    // intervals in the closed form (`fastrip::SLIP_STEPS`; with 8: +0.30 points, 2.65 %); most
+    // of it from the 1360 mm two-region states (dy 4.95 … 5.0 mm: tread and flange root in one
+    // slot whose 16 strips span both regions and the gap between them).
+    let extra = mean(ft_step) - mean(ft_pipe);
     println!(
         "FaStrip-AC against TANG through the step: {:+.3} points over the pipeline",
-        pc(mean(ft_step) - mean(ft_pipe))
+        pc(extra)
     );
+    assert!(extra <= 0.003, "{:+.3} points > 0.3", pc(extra));
 }

@@ -390,13 +390,17 @@ fn issue14_sweep_both_wheels_both_back_to_backs() {
         "flange {ft:?} {fp:?} {fa:?}"
     );
     // the closed form's own part in flange contact (of μF_z; N is up to 4 F_z there): median
-    // 5.3 %, max 16.9 % (was 33 % / 77 % before its direction integrator followed the rigid
-    // slip's turn along the strips); at the flange root 1.2 / 6.5 %
-    assert!(fc.0 <= 0.08 && fc.2 <= 0.18, "flange closed form {fc:?}");
+    // 1.05 %, max 3.15 % with 16 slip-zone intervals (8: 5.3 / 16.9 %; 33 % / 77 % before its
+    // direction integrator followed the rigid slip's turn along the strips); at the flange root
+    // 0.62 / 4.65 % (8: 1.2 / 6.5 %)
+    assert!(fc.0 <= 0.015 && fc.2 <= 0.04, "flange closed form {fc:?}");
     assert!(
-        rc.0 <= 0.02 && rc.2 <= 0.08,
+        rc.0 <= 0.01 && rc.2 <= 0.055,
         "flange root closed form {rc:?}"
     );
+    // the whole flange force: median 1.46 % of μF_z (8 intervals: 6.0 %)
+    let ff = by_region[2][0];
+    assert!(ff.0 <= 0.02, "flange force {ff:?}");
     // overall medians on target
     assert!(overall[0].0 <= 0.01 && overall[1].0 <= 0.005, "{overall:?}");
     assert!(overall[2].0 <= 0.03 && overall[3].0 <= 0.03, "{overall:?}");
@@ -807,12 +811,13 @@ fn closed_form_strip_forces_match_fastrip_on_a_fine_hertz_grid() {
             "{xi:e} {eta:e} {phi:e}: fastrip ({:.1},{:.1},{:.0}) closed ({fx:.1},{fy:.1},{mz:.0})",
             r.total.fx, r.total.fy, r.total.mz
         );
-        // Within 0.2 % of mu N of the cell FaStrip (measured ≤ 0.14 %) up to phi = 2e-4 and at
-        // large creepage. At pure spin phi = 1e-3 (far beyond the linear range) F_y is 0.66 % of
-        // mu N above: the cell FaStrip converges to -16 725 N (400 and 1600 cells agree within
-        // 13 N), the closed form gives -16 871 N, a model difference (FASTSIM re-adhering inside
-        // its slip zone under spin, which the closed form's direction field does not follow;
-        // between 0.6 % and 1.2 % with the integrators tried), asserted at 1.5 %.
+        // Within 0.2 % of mu N of the cell FaStrip (measured ≤ 0.02 % with 16 slip-zone
+        // intervals, ≤ 0.14 % with 8) up to phi = 2e-4 and at large creepage. At pure spin
+        // phi = 1e-3 (far beyond the linear range) F_y is 1.2 % of mu N above: the cell FaStrip
+        // converges to -16 725 N (400 and 1600 cells agree within 13 N), the closed form gives
+        // -16 957 N, a model difference (FASTSIM re-adhering inside its slip zone under spin,
+        // which the closed form's direction field does not follow; 0.76 % with 8 intervals, whose
+        // discretisation error partly offset it), asserted at 1.5 %.
         let tol = if phi < 1e-3 { 0.002 } else { 0.015 };
         eprintln!(
             "{xi:e} {eta:e} {phi:e}: fastrip ({:.1},{:.1},{:.0}) closed ({fx:.1},{fy:.1},{mz:.0})",

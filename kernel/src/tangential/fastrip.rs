@@ -668,9 +668,21 @@ pub fn fastrip<T: Real, const S: usize, const C: usize, P: PressureField<T>, K: 
     res.checked()
 }
 
-/// Intervals of the slip-zone quadrature of [`strip_forces`] (uniform in θ, x̄ = −a cos θ; 8:
-/// the quarter interval comes from five angle halvings).
-pub const SLIP_STEPS: usize = 8;
+/// Intervals of the slip-zone quadrature of [`strip_forces`] (uniform in θ, x̄ = −a cos θ; the
+/// quarter interval comes from [`SLIP_HALVINGS`] angle halvings).
+///
+/// 16, not 8: where the rigid slip turns fast along a long strip — flange contact, spin φ with
+/// φa comparable to |ξ| (S1002/UIC60 deep flange: a_j up to 24 mm, φ ≈ 2e-3 1/mm, ξ ≈ −3e-2) —
+/// the direction's error is second order in the interval. On such a strip (host-tests
+/// `realtime_cells`, the single-strip check) the closed form was 6.5 % of μN off the
+/// grid-converged cell FaStrip with 8 intervals, 1.0 % with 16, 0.2 % with 32; at ξ = −5e-3 with
+/// the same spin 21.9, 4.6, 0.6 %. On the issue-14 sweep the closed form's own part of the
+/// flange force error went from 5.3 / 16.3 / 16.9 to 1.1 / 2.7 / 3.2 % of μF_z (median / P95 /
+/// max) for +49 % instructions per real-time step (BENCHMARKS.md).
+pub const SLIP_STEPS: usize = 16;
+/// Angle halvings of θ_top that give the quarter interval θ_top/(4 [`SLIP_STEPS`]).
+pub const SLIP_HALVINGS: usize = 6;
+const _: () = assert!(1 << SLIP_HALVINGS == 4 * SLIP_STEPS);
 /// Samples of the FASTSIM slip-onset search of [`strip_forces`] (then [`ONSET_BISECTIONS`]).
 pub const ONSET_SAMPLES: usize = 8;
 /// Bisection steps of the FASTSIM slip-onset search.
@@ -942,8 +954,12 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
     let at = if onset.1 > T::ZERO { onset } else { mid };
     let v = computed(ros2(f, v0, h, at, mid, T::ONE).1);
     let mut u: Option<(T, T)> = if upstream { Some(v) } else { None };
-    // SLIP_STEPS = 8 intervals of h = θ_top/8: (cos, sin) of h/4 by five halvings, h/2 doubled
-    let hq = halve(halve(halve(halve(halve(top)))));
+    // SLIP_STEPS intervals of h = θ_top/SLIP_STEPS: (cos, sin) of h/4 by SLIP_HALVINGS
+    // halvings, h/2 doubled
+    let mut hq = top;
+    for _ in 0..SLIP_HALVINGS {
+        hq = halve(hq);
+    }
     let hh = (hq.0 * hq.0 - hq.1 * hq.1, T::TWO * hq.0 * hq.1);
     let h = c::<T>(4.0) * asin_small(hq.1);
     let v_onset = f.adhesion_dir(onset.0);
@@ -1034,19 +1050,21 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
 /// even when it is empty (on a stand-in zone, discarded), and every interval computes the
 /// carried, the adhesion and the onset's direction and selects (the real-time step's constant
 /// cost, [`crate::step`]). Against [`fastrip`] on a 6 × 4 mm Hertz
-/// patch with 400 cells per strip (host-tests `realtime_step`): within 0.14 % of μN up to
-/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 0.76 % at pure spin φ = 1e-3 1/mm (the cell
+/// patch with 400 cells per strip (host-tests `realtime_step`): within 0.02 % of μN up to
+/// φ = 2e-4 1/mm and at large creepage (η = 1e-2), 1.2 % at pure spin φ = 1e-3 1/mm (the cell
 /// FaStrip is grid-converged there: FASTSIM re-adheres inside its slip zone under spin, which
-/// this direction field does not follow; following it, a free march in closed form until |p|
-/// reaches μ p_n again, brought this to 0.35 % at 4 % more instructions per step, with no change
-/// on the S1002/UIC60 sweep). In flange contact (φ ≈ 2.5e-4 1/mm, ξ ≈ −2.4e-3, nearly full
+/// this direction field does not follow; with 8 intervals 0.76 %, their discretisation error
+/// partly offsetting it; following the re-adhesion, a free march in closed form until |p|
+/// reaches μ p_n again, brought 8 intervals to 0.35 % at 4 % more instructions per step, with no
+/// change on the S1002/UIC60 sweep). In flange contact (φ ≈ 2.5e-4 1/mm, ξ ≈ −2.4e-3, nearly full
 /// slip, stiffness z = γhJ ≈ 1) the resultant's direction was about 1° off the cell FaStrip's
 /// (up to 2.3 % of μN of the patch) with full ROS2 from z = 1 and 1.6 % with Heun's rule below
 /// z = 1; with the explicit midpoint rule below z = 1 it is within the table's own error there
 /// (S1002/UIC60 sweep: force maximum 1.4 % of μF_z). Deeper in flange contact (ξ down to −4.4e-2,
-/// φ up to 1.9e-3 1/mm) the closed form is within 0.3–1.3 % of μN of the cell FaStrip on the
+/// φ up to 1.9e-3 1/mm) the closed form is within 0.16–1.2 % of μN of the cell FaStrip on the
 /// converged solver's strips (host-tests `realtime_cells`), with the Rosenbrock step's
-/// s-derivative term (module-private `ros2`); without it 4.6–13 %. Before this direction pass the slip zone
+/// s-derivative term (module-private `ros2`); without it 4.6–13 %; on longer strips, where the
+/// rigid slip turns by most of a half-turn, see [`SLIP_STEPS`]. Before this direction pass the slip zone
 /// took the strip theory's slip direction blended into the rigid slip's, 7.9 % of μN off at
 /// φ = 1e-3 and 4.3 % of μF_z in flange contact.
 ///
