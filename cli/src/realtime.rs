@@ -249,22 +249,8 @@ pub fn sweep(
         .collect();
     let mut docs = vec![];
     for &dy in shifts {
-        let mut wr = a.wr.clone();
-        wr.dy = dy;
-        wr.yaw = yaw_of(dy);
-        let sa = SolveArgs {
-            ellipse: None,
-            curvatures: None,
-            fn_n: None,
-            approach: None,
-            wr,
-            common: a.common.clone(),
-            json: a.json,
-            plot: None,
-            plot_reference: false,
-            table: Some(path.to_path_buf()),
-            given: given.clone(),
-        };
+        let sa =
+            crate::sweep::solve_args(a, dy, yaw_of(dy), Some(path.to_path_buf()), given.clone());
         if docs.is_empty() {
             crate::validate::check_solve(&sa)?;
         }

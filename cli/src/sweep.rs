@@ -64,6 +64,34 @@ fn models(a: &SweepArgs) -> Result<Vec<(Tangential, Flex)>, String> {
         .collect())
 }
 
+/// The `wrc solve` arguments of one state of the sweep `a`: shift `dy` (mm) and yaw `yaw`
+/// (mrad), the sweep's wheel/rail and model options, `table` for the real-time path and the
+/// option names `given` on the command line.
+pub fn solve_args(
+    a: &SweepArgs,
+    dy: f64,
+    yaw: f64,
+    table: Option<std::path::PathBuf>,
+    given: Vec<String>,
+) -> SolveArgs {
+    let mut wr = a.wr.clone();
+    wr.dy = dy;
+    wr.yaw = yaw;
+    SolveArgs {
+        ellipse: None,
+        curvatures: None,
+        fn_n: None,
+        approach: None,
+        wr,
+        common: a.common.clone(),
+        json: a.json,
+        plot: None,
+        plot_reference: false,
+        table,
+        given,
+    }
+}
+
 /// The CSV header of the sweep (one row per shift, model and patch).
 pub const CSV_HEADER: &str = "dy_mm,yaw_mrad,tangential,flex,patch,y_ref_mm,contact_angle_rad,xi,eta,phi_per_mm,fn_n,fx_n,fy_n,mz_nmm,pmax_mpa,area_mm2,stick_area_fraction,wear_depth_max_um,converged,time_us,model\n";
 
@@ -130,26 +158,10 @@ pub fn run(a: &SweepArgs) -> Result<(), String> {
     let mut series: Vec<(String, Vec<(f64, Document)>)> = vec![];
     for (k, &dy) in shifts.iter().enumerate() {
         for (mi, &(tang, flex)) in models.iter().enumerate() {
-            let mut wr = a.wr.clone();
-            wr.dy = dy;
-            wr.yaw = yaw_of(dy);
-            wr.back_to_back = Some(wr.back_to_back.unwrap_or(1353.0));
-            let mut common = a.common.clone();
-            common.tangential = tang;
-            common.flex = Some(flex);
-            let sa = SolveArgs {
-                ellipse: None,
-                curvatures: None,
-                fn_n: None,
-                approach: None,
-                wr,
-                common,
-                json: a.json,
-                plot: None,
-                plot_reference: false,
-                table: None,
-                given: vec![],
-            };
+            let mut sa = solve_args(a, dy, yaw_of(dy), None, vec![]);
+            sa.wr.back_to_back = Some(sa.wr.back_to_back.unwrap_or(1353.0));
+            sa.common.tangential = tang;
+            sa.common.flex = Some(flex);
             if k == 0 && mi == 0 {
                 crate::validate::check_solve(&sa)?;
             }
