@@ -581,7 +581,7 @@ fn text(d: &serde_json::Value) -> String {
     let t = &d["total"];
     let _ = writeln!(
         s,
-        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; real-time step, {:.2} µs",
+        "total: Fn {:.1} N, Fx {:.2} N, Fy {:.2} N, Mz {:.1} N mm; realtime path (the fixed-cost step), kernel time {:.2} µs",
         f(t, "fn_n"),
         f(t, "fx_n"),
         f(t, "fy_n"),
