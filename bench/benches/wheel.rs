@@ -130,16 +130,16 @@ fn bench(c: &mut Criterion) {
         passes.push(res.geometry_calls as f64);
         solves.push(res.stripes_solves as f64);
         rounds.push(res.coupling_rounds as f64);
-        npatch.push(res.n as f64);
+        npatch.push(res.patches.len() as f64);
         let dv = res.vertical_approach;
         t_cp.push(time(reps, || {
             contact_patches(&g, dv, &cfg.patches, &mut patches).expect("patches")
         }));
         contact_patches(&g, dv, &cfg.patches, &mut patches).expect("patches");
         // the heaviest patch
-        let (kp, p) = res.patches[..res.n]
+        let (kp, p) = res
+            .patches
             .iter()
-            .flatten()
             .enumerate()
             .max_by(|a, b| a.1.load.total_cmp(&b.1.load))
             .expect("a patch");

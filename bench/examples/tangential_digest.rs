@@ -219,7 +219,7 @@ fn wheel<T: Real>(o: &mut Out, g: u8) {
                 // wear 7.
                 o.pushk(g, 0, res.vertical_approach.to_f64());
                 o.pushk(g, 1, res.coupling_rounds as f64);
-                for p in res.patches[..res.n].iter().flatten() {
+                for p in res.patches.iter() {
                     o.pushk(g, 2, p.load.to_f64());
                     let t = &p.result.totals;
                     o.pushk(g, 3, t.fx.to_f64());
@@ -228,7 +228,7 @@ fn wheel<T: Real>(o: &mut Out, g: u8) {
                     o.pushk(g, 5, p.result.pmax.to_f64());
                     o.pushk(g, 6, p.result.area.to_f64());
                     o.pushk(g, 1, t.n_slip as f64);
-                    for rg in p.result.regions[..p.result.n_regions].iter() {
+                    for rg in p.result.regions.iter() {
                         o.pushk(g, 3, rg.totals.fx.to_f64());
                         o.pushk(g, 3, rg.totals.fy.to_f64());
                         o.pushk(g, 7, rg.wear_max.to_f64());

@@ -103,9 +103,9 @@ fn main() {
     let res = solve_wheel(&g, 83_300.0, &mat, &cfg, &mut ws, &mut ()).expect("wheel");
     let mut patches = Box::new(Patches::<f64, 4, 128>::new());
     contact_patches(&g, res.vertical_approach, &cfg.patches, &mut patches).expect("patches");
-    let p = res.patches[..res.n]
+    let p = res
+        .patches
         .iter()
-        .flatten()
         .max_by(|a, b| a.load.total_cmp(&b.load))
         .expect("a patch");
     let mut kk = 0;

@@ -63,18 +63,20 @@ fn main() {
         let b = solve(&pair32, c, &mut ws32);
         let mut df = 0.0f64;
         let (mut dp, mut da) = (0.0f64, 0.0f64);
-        for (pa, pb) in a.patches[..a.n].iter().zip(b.patches[..b.n].iter()) {
-            if let (Some(pa), Some(pb)) = (pa, pb) {
-                let (ta, tb) = (&pa.result.totals, &pb.result.totals);
-                df = df
-                    .max((ta.fx - tb.fx.to_f64()).abs())
-                    .max((ta.fy - tb.fy.to_f64()).abs());
-                dp = dp.max((pa.result.pmax - pb.result.pmax.to_f64()).abs() / pa.result.pmax);
-                da = da.max((pa.result.area - pb.result.area.to_f64()).abs() / pa.result.area);
-            }
+        for (pa, pb) in a.patches.iter().zip(b.patches.iter()) {
+            let (ta, tb) = (&pa.result.totals, &pb.result.totals);
+            df = df
+                .max((ta.fx - tb.fx.to_f64()).abs())
+                .max((ta.fy - tb.fy.to_f64()).abs());
+            dp = dp.max((pa.result.pmax - pb.result.pmax.to_f64()).abs() / pa.result.pmax);
+            da = da.max((pa.result.area - pb.result.area.to_f64()).abs() / pa.result.area);
         }
         let dd = (a.vertical_approach - b.vertical_approach.to_f64()).abs();
-        let df = if a.n == b.n { df / muf } else { f64::INFINITY };
+        let df = if a.patches.len() == b.patches.len() {
+            df / muf
+        } else {
+            f64::INFINITY
+        };
         println!(
             "{i:2} {:?} {:+.0} | {df:.2e} | {dp:.2e} | {da:.2e} | {dd:.2e} | {} {}",
             c.side, c.dy, a.geometry_calls, b.geometry_calls

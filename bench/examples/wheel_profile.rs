@@ -33,7 +33,7 @@ fn main() {
             let res = solve_wheel(&g, 83_300.0, &mat, &cfg, &mut ws, &mut ()).expect("wheel");
             calls += res.geometry_calls;
             solves += res.stripes_solves;
-            for (k, p) in res.patches[..res.n].iter().flatten().enumerate() {
+            for (k, p) in res.patches.iter().enumerate() {
                 sum += p.result.totals.fy.abs() + p.result.pmax;
                 let t = &p.result.totals;
                 writeln!(

@@ -175,11 +175,11 @@ struct Diff {
 fn diff(c: &Res, w: &Res, fz: f64) -> Diff {
     let mut d = Diff {
         dv: (w.vertical_approach / c.vertical_approach - 1.0).abs(),
-        same_patches: c.n == w.n,
+        same_patches: c.patches.len() == w.patches.len(),
         ..Diff::default()
     };
-    for pc in c.patches[..c.n].iter().flatten() {
-        let pw = w.patches[..w.n].iter().flatten().min_by(|a, b| {
+    for pc in c.patches.iter() {
+        let pw = w.patches.iter().min_by(|a, b| {
             (a.frame.y_ref_rail - pc.frame.y_ref_rail)
                 .abs()
                 .total_cmp(&(b.frame.y_ref_rail - pc.frame.y_ref_rail).abs())
@@ -263,7 +263,7 @@ fn run(name: &str, steps: &[Step], cfg: &WheelConfig<f64>) {
             counts[2][i].push(res.coupling_rounds as f64);
             counts[3][i].push(res.iterations as f64);
             unconverged[i] += usize::from(!res.converged);
-            for p in res.patches[..res.n].iter().flatten() {
+            for p in res.patches.iter() {
                 check[i] += p.result.totals.fy.abs() + p.result.pmax;
             }
         }

@@ -282,16 +282,11 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     let mut warnings = vec![];
     let per_patch = patch_strips(&res, &mat, &cfg, &mut ws, &mut warnings)?;
     let mut patches = vec![];
-    for (k, (p, (strips, y0))) in res.patches[..res.n]
-        .iter()
-        .flatten()
-        .zip(per_patch)
-        .enumerate()
-    {
+    for (k, (p, (strips, y0))) in res.patches.iter().zip(per_patch).enumerate() {
         let st = stats.per.get(k).cloned().unwrap_or_default();
         let r = &p.result;
         let mut wear = 0.0f64;
-        for reg in r.regions[..r.n_regions].iter() {
+        for reg in r.regions.iter() {
             wear = wear.max(reg.wear_max.to_f64());
         }
         patches.push(Patch {
@@ -324,7 +319,7 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     }
     // plots: first patch; strip wear from the pipeline workspace belongs to the last patch solved,
     // so it is reported only for single-patch cases
-    let wear_strips = if res.n == 1 {
+    let wear_strips = if res.patches.len() == 1 {
         let set = &ws.pipeline.set;
         (0..set.n_strips)
             .map(|j| (set.y[j].to_f64(), ws.pipeline.wear.depth[j].to_f64() * 1e3))
@@ -396,7 +391,7 @@ fn patch_strips<T: Real, const C: usize>(
 ) -> Result<Vec<PatchStrips>, String> {
     let mut out = vec![];
     let mut next = 0usize;
-    for (m, p) in res.patches[..res.n].iter().flatten().enumerate() {
+    for (m, p) in res.patches.iter().enumerate() {
         let np = ws.patches.len.min(4);
         let Some(k) = (next..np).find(|&k| ws.patches.items[k].frame == p.frame) else {
             warnings.push(format!("patch {m}: geometry patch not found; no strips"));

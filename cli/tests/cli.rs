@@ -295,7 +295,7 @@ fn wheel_rail_norm_matches_the_library() {
         a.extend(["--normal", "norm", "--flex", flex, "--tangential", tang]);
         let d = json(&a);
         let ps = d["patches"].as_array().unwrap();
-        assert_eq!(ps.len(), res.n);
+        assert_eq!(ps.len(), res.patches.len());
         for (p, kp) in ps.iter().zip(&kps) {
             let (_, sol) = norm_on_gap(
                 &kp.gap,
@@ -352,7 +352,7 @@ fn wheel_rail_hertz_matches_the_library() {
     a.extend(["--normal", "hertz"]);
     let d = json(&a);
     let ps = d["patches"].as_array().unwrap();
-    assert_eq!(ps.len(), res.n);
+    assert_eq!(ps.len(), res.patches.len());
     for (p, kp) in ps.iter().zip(&kps) {
         let s0 = gap_sample_at(&kp.gap, 0.0);
         let h = wrc_kernel::hertz::from_load(s0.a_long, s0.b_lat, kp.load, &mat).unwrap();

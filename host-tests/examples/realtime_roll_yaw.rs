@@ -49,7 +49,7 @@ fn solve(
     let res = solve_wheel(&g, 80_000.0, &Material::steel(), &cfg, &mut ws, &mut ()).ok()?;
     let mut c = Contact::default();
     let mut most = 0.0;
-    for p in res.patches[..res.n].iter().flatten() {
+    for p in res.patches.iter() {
         c.fx += p.result.totals.fx;
         c.fy += p.result.totals.fy;
         c.pmax = c.pmax.max(p.result.pmax);

@@ -142,7 +142,7 @@ fn conv() {
             &mut (),
         )
         .unwrap();
-        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let ps: Vec<_> = res.patches.iter().collect();
         println!(
             "dy {dy:.4} conv {} it {} rounds {} solves {} vload {:.4} dv {:.6e} | {}",
             res.converged,
@@ -154,7 +154,11 @@ fn conv() {
             ps.iter()
                 .map(|p| format!(
                     "[N {:.2} pmax {:.3} area {:.4} regs {} conv {}]",
-                    p.load, p.result.pmax, p.result.area, p.result.n_regions, p.result.converged
+                    p.load,
+                    p.result.pmax,
+                    p.result.area,
+                    p.result.regions.len(),
+                    p.result.converged
                 ))
                 .collect::<Vec<_>>()
                 .join(" ")
@@ -276,7 +280,7 @@ fn forces_fine() {
             &mut (),
         )
         .unwrap();
-        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let ps: Vec<_> = res.patches.iter().collect();
         println!(
             "dy {dy:.4} conv {} | {}",
             res.converged,
@@ -288,7 +292,7 @@ fn forces_fine() {
                     p.result.totals.fy,
                     p.result.pmax,
                     p.result.area,
-                    p.result.n_regions
+                    p.result.regions.len()
                 ))
                 .collect::<Vec<_>>()
                 .join(" ")
@@ -337,7 +341,7 @@ fn fine_regions() {
         let res =
             wrc_kernel::wheel::solve_wheel(&g, load, &Material::steel(), &cfg, &mut ws, &mut ())
                 .unwrap();
-        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let ps: Vec<_> = res.patches.iter().collect();
         let tot = |f: &dyn Fn(&wrc_kernel::wheel::WheelPatch<f64, 4>) -> f64| -> f64 {
             ps.iter().map(|p| f(p)).sum()
         };
@@ -355,7 +359,7 @@ fn fine_regions() {
             ps.iter().map(|p| p.result.pmax).fold(0.0, f64::max),
             tot(&|p| p.result.area),
             ps.iter()
-                .map(|p| p.result.regions[..p.result.n_regions]
+                .map(|p| p.result.regions[..p.result.regions.len()]
                     .iter()
                     .map(|g| format!(
                         "({:.3}..{:.3} n{} N {:.1} pm {:.2} A {:.3} fx {:.1})",
@@ -429,14 +433,12 @@ fn sliver_scan() {
                         &mut (),
                     );
                     match res {
-                        Ok(res)
-                            if only0
-                                && !res.regions[..res.n_regions].iter().any(|r| r.load == 0.0) => {}
+                        Ok(res) if only0 && !res.regions.iter().any(|r| r.load == 0.0) => {}
                         Ok(res) => println!(
                             "{} {hm:?} dv {dv:.6} N {nl} regions {} loads {:?}",
                             row.label(),
-                            res.n_regions,
-                            res.regions[..res.n_regions]
+                            res.regions.len(),
+                            res.regions[..res.regions.len()]
                                 .iter()
                                 .map(|r| r.load)
                                 .collect::<Vec<_>>()

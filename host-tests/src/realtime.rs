@@ -333,8 +333,7 @@ pub fn compare<const K: usize, const ST: usize>(
         let (mut fx, mut fy, mut n, mut pm, mut ar) = (0.0, 0.0, 0.0, 0.0f64, 0.0);
         let (mut cx, mut cy) = (0.0, 0.0);
         let (mut angle, mut most) = (0.0, 0.0);
-        for (q, p) in refr.patches[..refr.n].iter().enumerate() {
-            let Some(p) = p else { continue };
+        for (q, p) in refr.patches.iter().enumerate() {
             fx += p.result.totals.fx;
             fy += p.result.totals.fy;
             n += p.load;

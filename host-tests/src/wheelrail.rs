@@ -184,11 +184,7 @@ pub fn sweep_cases(loads: &[f64]) -> Result<Vec<SweepCase>, String> {
 
 /// A coarse signature of a solved wheel: number of patches and regions per patch.
 pub fn contact_signature(res: &WheelResult<f64, PATCHES, REGIONS>) -> Vec<usize> {
-    res.patches[..res.n]
-        .iter()
-        .flatten()
-        .map(|p| p.result.n_regions)
-        .collect()
+    res.patches.iter().map(|p| p.result.regions.len()).collect()
 }
 
 /// Shifts between the integer sweep shifts where the contact changes character: for each side,
@@ -738,15 +734,15 @@ pub fn solve_kernel_case(
     };
     // the vertical approach of the kernel's last geometry pass (the frames' own; the returned
     // `vertical_approach` can be the next iterate when the load loop stops on its pass cap)
-    let dv = wheel.patches[..wheel.n]
+    let dv = wheel
+        .patches
         .iter()
-        .flatten()
         .map(|p| p.frame.approach_vertical)
         .next()
         .unwrap_or(wheel.vertical_approach);
     contact_patches(geom, dv, &opts, &mut fine)?;
     let mut patches = vec![];
-    for wp in wheel.patches[..wheel.n].iter().flatten() {
+    for wp in wheel.patches.iter() {
         let fp = fine
             .as_slice()
             .iter()
@@ -761,7 +757,7 @@ pub fn solve_kernel_case(
             frame: wp.frame,
             creepage: wp.creepage,
             load: wp.load,
-            kernel: wp.result,
+            kernel: wp.result.clone(),
             stripes_samples,
             gap: gap_samples(fp),
         });

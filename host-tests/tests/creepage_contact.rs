@@ -32,9 +32,9 @@ fn xi_at(fz: f64) -> (f64, f64, f64) {
     let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     let res = solve_wheel(&g, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
     assert!(res.converged, "F_z {fz}");
-    let main = res.patches[..res.n]
+    let main = res
+        .patches
         .iter()
-        .flatten()
         .max_by(|a, b| a.load.total_cmp(&b.load))
         .unwrap();
     (

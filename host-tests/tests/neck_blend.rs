@@ -60,7 +60,7 @@ fn solve(s: &[StripSample<f64>], load: f64, ws: &mut DefaultWorkspace<f64>) -> O
     let r = solve_patch(s, load, &cr, &Material::steel(), &cfg, ws, &mut ()).unwrap();
     assert!(r.converged);
     Out {
-        regions: r.n_regions,
+        regions: r.regions.len(),
         q: [r.pmax, r.area, r.approach, r.totals.fx, r.totals.fy],
     }
 }

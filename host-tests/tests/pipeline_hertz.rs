@@ -92,7 +92,7 @@ fn pipeline_on_hertz_gap() {
         cfg.adapt = Adaptation::AyasseChollet(len);
         let mut cells = Cells::default();
         let r = solve_patch(&samples, load, &cr, &mat, &cfg, &mut ws, &mut cells).unwrap();
-        assert!(r.converged && r.n_regions == 1);
+        assert!(r.converged && r.regions.len() == 1);
         let h = fastrip(
             &hp,
             &SemiEllipticStrips,

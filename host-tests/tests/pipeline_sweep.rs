@@ -77,12 +77,12 @@ fn run<T: Real>(
         wres.iterations,
         wres.vertical_load.to_f64()
     );
-    assert_eq!(wres.n, 1);
-    let res = wres.patches[0].unwrap();
+    assert_eq!(wres.patches.len(), 1);
+    let res = &wres.patches[0];
     assert!((res.load.to_f64() / load - 1.0).abs() <= 2.0 * cfg.tol.to_f64());
     let patches_found = ws.patches.len;
     let res = Main {
-        patch: res.result,
+        patch: res.result.clone(),
         creepage: res.creepage,
         frame_passes: wres.iterations,
         frame_converged: wres.converged,
@@ -130,7 +130,7 @@ fn run<T: Real>(
         .max((p32.totals.fy as f64 - res.patch.totals.fy.to_f64()).abs())
         / (0.3 * load);
     let mut wear = 0.0f64;
-    for k in 0..res.patch.n_regions {
+    for k in 0..res.patch.regions.len() {
         wear = wear.max(res.patch.regions[k].wear_max.to_f64());
     }
     Res {
@@ -139,7 +139,7 @@ fn run<T: Real>(
         mz: res.patch.totals.mz.to_f64(),
         pmax: res.patch.pmax.to_f64(),
         area: res.patch.area.to_f64(),
-        regions: res.patch.n_regions,
+        regions: res.patch.regions.len(),
         patches: patches_found,
         passes: res.frame_passes,
         conv: res.frame_converged,

@@ -120,7 +120,7 @@ fn sweep(yaw_amp: f64) -> [Stats; 4] {
         let rt = step::<f64, K, ST>(&t, &input(dy, fz, pose)).unwrap();
         let (mut fx, mut fy, mut n) = (0.0, 0.0, 0.0);
         let (mut pm, mut ar) = (0.0f64, 0.0);
-        for p in refr.patches[..refr.n].iter().flatten() {
+        for p in refr.patches.iter() {
             fx += p.result.totals.fx;
             fy += p.result.totals.fy;
             n += p.load;

@@ -578,7 +578,7 @@ fn run_stripes<T: Real + core::fmt::Debug>(s: &StripesIn) -> Result<(), TestCase
             s.load
         );
     }
-    for r in &sol.regions[..sol.n_regions] {
+    for r in &sol.regions {
         for v in [r.y_lo, r.y_hi, r.load, r.pmax, r.area, r.a_max] {
             prop_assert!(fin(v), "{s:?}: {r:?}");
         }
@@ -869,8 +869,8 @@ fn check_result<T: Real + core::fmt::Debug>(
         "{p:?}: {r:?}"
     );
     prop_assert!(audit.finite, "{p:?}: non-finite cell output");
-    prop_assert!(r.n_regions >= 1 && r.n_regions <= 3);
-    for reg in &r.regions[..r.n_regions] {
+    prop_assert!(!r.regions.is_empty() && r.regions.len() <= 3);
+    for reg in &r.regions {
         for v in [
             reg.y_lo,
             reg.y_hi,
@@ -1137,7 +1137,7 @@ fn fingerprint(
         bits.extend([t.fx, t.fy, t.mz, t.fn_, res.approach, res.area, res.pmax].map(f64::to_bits));
         bits.push(res.iterations as u64);
         bits.push(res.converged as u64);
-        for reg in &res.regions[..res.n_regions] {
+        for reg in &res.regions {
             bits.extend(
                 [
                     reg.y_lo,

@@ -106,7 +106,7 @@ fn run<T: Real>(patches: &[Vec<StripSample<f64>>], row: &Row, cfg: &PipelineConf
         fx: r.totals.fx.to_f64(),
         fy: r.totals.fy.to_f64(),
         mz: r.totals.mz.to_f64(),
-        regions: r.n_regions,
+        regions: r.regions.len(),
     }
 }
 

@@ -62,7 +62,7 @@ fn line(label: String, sol: &CaseSolution) -> Line {
     Line {
         label,
         n_patches: ps.len(),
-        regions: ps.iter().map(|p| p.kernel.n_regions).collect(),
+        regions: ps.iter().map(|p| p.kernel.regions.len()).collect(),
         angle: m.frame.angle,
         load: ps.iter().map(|p| p.load).sum(),
         pmax: (
@@ -395,8 +395,8 @@ fn stripes_against_norm_on_the_flange_root_band() {
         // regions that correspond (tread, flange root): the uncoupled flange-root share within
         // 25 points of NORM's (not e.g. a sliver beside one merged region)
         if nl.len() == 2
-            && p.kernel.n_regions == 2
-            && off.n_regions == 2
+            && p.kernel.regions.len() == 2
+            && off.regions.len() == 2
             && (share(off.regions[1].load) - share(nl[1])).abs() < 0.25
         {
             shares.push((
@@ -933,7 +933,7 @@ fn sliver_region_does_not_fail_the_patch() {
         &mut (),
     )
     .unwrap();
-    assert_eq!(res.n_regions, 2);
+    assert_eq!(res.regions.len(), 2);
     let loads: Vec<f64> = res.regions[..2].iter().map(|r| r.load).collect();
     // the sliver carries nothing; the loads still add up to the patch load
     assert!(loads.contains(&0.0), "{loads:?}");
@@ -978,7 +978,7 @@ fn interaction_diag() {
                     " patch load {:.0} approach S {:.5} N {:.5} grid {}x{}@{:.3}",
                     p.load, p.kernel.approach, p.norm.approach, g.mx, g.my, g.dx
                 );
-                for k in 0..p.kernel.n_regions {
+                for k in 0..p.kernel.regions.len() {
                     let rg = p.kernel.regions[k];
                     println!(
                         "  S region y {:.2}..{:.2} load {:.0} pmax {:.0} area {:.1}",
@@ -1022,7 +1022,7 @@ fn interaction_diag() {
                         k.iterations,
                         k.converged
                     );
-                    for rg in &k.regions[..k.n_regions] {
+                    for rg in &k.regions {
                         println!(
                             "  V region y {:.2}..{:.2} load {:.0} pmax {:.0} area {:.1}",
                             rg.y_lo, rg.y_hi, rg.load, rg.pmax, rg.area

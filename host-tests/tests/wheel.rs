@@ -41,10 +41,10 @@ fn manchester_wheel_solve_matches_contact() {
         let res = solve_wheel(&geom, 10_000.0, &mat, &cfg, &mut ws, &mut ()).unwrap();
         assert!(res.converged, "y_ws {} {:?}", r.y_ws, r.side);
         assert!((res.vertical_load - 10_000.0).abs() < 1e-3);
-        let fn_: f64 = res.patches[..res.n].iter().flatten().map(|p| p.load).sum();
-        let main = res.patches[..res.n]
+        let fn_: f64 = res.patches.iter().map(|p| p.load).sum();
+        let main = res
+            .patches
             .iter()
-            .flatten()
             .max_by(|a, b| a.load.total_cmp(&b.load))
             .unwrap();
         let e_fn = (fn_ / r.fn_ - 1.0) * 100.0;

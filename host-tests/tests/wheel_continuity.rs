@@ -106,7 +106,7 @@ impl Solver<'_> {
         )
         .unwrap();
         assert!(res.converged, "{} (dy {dy:.7})", c.label);
-        let ps: Vec<_> = res.patches[..res.n].iter().flatten().collect();
+        let ps: Vec<_> = res.patches.iter().collect();
         let q = [
             ps.iter().map(|p| p.load).sum(),
             ps.iter().map(|p| p.result.totals.fx).sum(),

@@ -153,15 +153,11 @@ type Res = WheelResult<f64, 4, 4>;
 /// Asserts the bound of the module docs; returns the largest |ΔF|/(μ F_z).
 fn assert_close(c: &Res, w: &Res, fz: f64, what: &str) -> f64 {
     assert!(c.converged && w.converged, "{what}: not converged");
-    assert_eq!(c.n, w.n, "{what}: patch count");
+    assert_eq!(c.patches.len(), w.patches.len(), "{what}: patch count");
     let ddv = (w.vertical_approach / c.vertical_approach - 1.0).abs();
     assert!(ddv <= 5e-5, "{what}: δ_v {ddv:e}");
     let mut worst = 0.0f64;
-    for (pc, pw) in c.patches[..c.n]
-        .iter()
-        .flatten()
-        .zip(w.patches[..w.n].iter().flatten())
-    {
+    for (pc, pw) in c.patches.iter().zip(w.patches.iter()) {
         // the same patches in the same order: reference points a tolerance apart
         assert!(
             (pc.frame.y_ref_rail - pw.frame.y_ref_rail).abs() < 1e-3,
@@ -372,8 +368,16 @@ fn kept_round_results_equal_the_final_solve() {
             a, b,
             "step {i} y {y:.2}: kept results differ from the final solve"
         );
-        assert_eq!(count.patches, b.n, "step {i}: patches announced");
-        assert!(count.cells >= 16 * b.n, "step {i}: cells {}", count.cells);
+        assert_eq!(
+            count.patches,
+            b.patches.len(),
+            "step {i}: patches announced"
+        );
+        assert!(
+            count.cells >= 16 * b.patches.len(),
+            "step {i}: cells {}",
+            count.cells
+        );
     }
 }
 
@@ -411,12 +415,12 @@ fn realtime_preset_stays_within_its_measured_cost() {
         let c = solve_wheel(&g, FZ, &s.mat, &s.cfg, &mut ws, &mut ()).unwrap();
         let w = solve_wheel_warm(&g, FZ, &s.mat, &rt, &mut ws, &mut st, &mut ()).unwrap();
         assert!(w.converged, "realtime step {i}: not converged");
-        assert_eq!(c.n, w.n, "realtime step {i}: patch count");
-        for (pc, pw) in c.patches[..c.n]
-            .iter()
-            .flatten()
-            .zip(w.patches[..w.n].iter().flatten())
-        {
+        assert_eq!(
+            c.patches.len(),
+            w.patches.len(),
+            "realtime step {i}: patch count"
+        );
+        for (pc, pw) in c.patches.iter().zip(w.patches.iter()) {
             let (tc, tw) = (&pc.result.totals, &pw.result.totals);
             let df = ((tw.fx - tc.fx).powi(2) + (tw.fy - tc.fy).powi(2)).sqrt() / (MU * FZ);
             let dn = (pw.load - pc.load).abs() / FZ;
@@ -506,17 +510,21 @@ fn f32_series(name: &str, steps: &[(f64, f64, f64)]) {
         if i == 0 {
             assert_eq!(c, w, "{what}: cold state must reproduce solve_wheel");
         }
-        assert_eq!(c.n, w.n, "{what}: patch count");
-        assert_eq!(w.n, r64.n, "{what}: patch count f32 vs f64");
+        assert_eq!(c.patches.len(), w.patches.len(), "{what}: patch count");
+        assert_eq!(
+            w.patches.len(),
+            r64.patches.len(),
+            "{what}: patch count f32 vs f64"
+        );
         geo_c += c.geometry_calls;
         geo_w += w.geometry_calls;
         let dv = (w.vertical_approach as f64 / c.vertical_approach as f64 - 1.0).abs();
         w_dv = w_dv.max(dv);
-        for ((pc, pw), p64) in c.patches[..c.n]
+        for ((pc, pw), p64) in c
+            .patches
             .iter()
-            .flatten()
-            .zip(w.patches[..w.n].iter().flatten())
-            .zip(r64.patches[..r64.n].iter().flatten())
+            .zip(w.patches.iter())
+            .zip(r64.patches.iter())
         {
             assert!(
                 (pc.frame.y_ref_rail - pw.frame.y_ref_rail).abs() < 1e-2

@@ -6,6 +6,14 @@
 //!
 //! Units (methods.md §0.1): lengths mm, areas mm², forces N, stresses MPa, angles rad, velocities
 //! mm/s; creepages ξ, η dimensionless, spin φ in rad/mm. Tractions act on body 1 (the wheel).
+//!
+//! Capacities are const generics. Where a count varies with the state — the patches of a wheel
+//! ([`wheel::WheelResult::patches`]), the regions of a patch ([`pipeline::PatchResult::regions`]) —
+//! results hold a `heapless::Vec` of that capacity; the real-time step's slots stay a fixed array
+//! ([`step::StepResult::slots`]): slot k is the contact table's slot k, evaluated in every state
+//! whether it carries a patch or not (its load is then 0); the geometry's
+//! [`geometry::Patches`] are filled in place in the caller's workspace (see there). `nalgebra` is
+//! not used (see [`geometry`]).
 #![no_std]
 #![cfg_attr(feature = "hw-sqrt", feature(core_float_math))]
 #![forbid(unsafe_code)]

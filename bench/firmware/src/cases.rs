@@ -731,11 +731,11 @@ fn wheel_case<T: WheelProfiles, M: Meter>(
 fn push_wheel<T: Real>(o: &mut Outs<T>, res: &WheelResult<T, 4, 4>) {
     let scale = |x: T| 10.0 * math::abs(x).to_f64();
     let muf = 10.0 * 0.3 * 83_300.0;
-    o.count(res.n);
+    o.count(res.patches.len());
     o.flag(res.converged);
     o.real(res.vertical_load, scale(res.vertical_load));
     o.real(res.vertical_approach, scale(res.vertical_approach));
-    for p in res.patches[..res.n].iter().flatten() {
+    for p in res.patches.iter() {
         o.real(p.load, scale(p.load));
         o.real(p.frame.angle, scale(p.frame.angle));
         o.real(p.frame.y_ref_rail, 10.0);
@@ -745,7 +745,7 @@ fn push_wheel<T: Real>(o: &mut Outs<T>, res: &WheelResult<T, 4, 4>) {
         o.real(p.result.totals.fx, muf);
         o.real(p.result.totals.fy, muf);
         let mut wear = T::ZERO;
-        for r in &p.result.regions[..p.result.n_regions] {
+        for r in &p.result.regions {
             wear = math::max(wear, r.wear_max);
         }
         o.real(wear, 10.0 * scale(wear));

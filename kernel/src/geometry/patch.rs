@@ -269,6 +269,11 @@ impl<T: Real, const S: usize> Patch<T, S> {
 }
 
 /// Up to `K` patches of one wheel, ordered by increasing y_S (from the track centre outwards).
+///
+/// A count and a fixed array rather than a `heapless::Vec` (as the results use): the patches are
+/// filled in place, sample by sample, in the caller's workspace, and a `Patch` is large (4,200 B
+/// in f32, 8,368 B in f64 with 128 samples), so building one on the stack to push it would add
+/// that much stack on the target for nothing.
 #[derive(Clone, Debug)]
 pub struct Patches<T, const K: usize, const S: usize> {
     /// Number of valid patches.

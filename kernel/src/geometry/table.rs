@@ -1007,7 +1007,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
             if !res.converged {
                 self.rep.not_converged += 1;
             }
-            max_patches = max_patches.max(res.n);
+            max_patches = max_patches.max(res.patches.len());
             let f13 = math::cbrt(f);
             let f23 = f13 * f13;
             fixed[j] = [
@@ -1045,8 +1045,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 *s = TableSlot::EMPTY;
             }
             let mut taken = [false; K];
-            for q in 0..res.n.min(WK) {
-                let Some(wp) = res.patches[q] else { continue };
+            for (q, wp) in res.patches.iter().enumerate() {
                 if !(wp.load > T::ZERO) {
                     continue;
                 }

@@ -48,7 +48,7 @@
 //!     let cfg = WheelConfig::recommended(0.3, 55_555.6, 460.0);
 //!     let res = solve_wheel(&geom, fz_n, &mat, &cfg, ws, &mut ())?;
 //!     let (mut fx, mut fy) = (0.0, 0.0);
-//!     for p in res.patches[..res.n].iter().flatten() {
+//!     for p in &res.patches {
 //!         fx += p.result.totals.fx;
 //!         fy += p.result.totals.fy;
 //!     }
@@ -283,7 +283,7 @@ impl<T: Real> WheelConfig<T> {
 }
 
 /// One patch of the wheel.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WheelPatch<T, const NR: usize> {
     /// Frame: reference point, contact angle, rolling radius, approach.
     pub frame: PatchFrame<T>,
@@ -296,12 +296,10 @@ pub struct WheelPatch<T, const NR: usize> {
 }
 
 /// Result of [`solve_wheel`].
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct WheelResult<T, const K: usize, const NR: usize> {
-    /// Patches (`patches[..n]`), ordered as the geometry orders them.
-    pub patches: [Option<WheelPatch<T, NR>>; K],
-    /// Number of patches.
-    pub n: usize,
+    /// The loaded patches, ordered as the geometry orders them (at most `K`).
+    pub patches: heapless::Vec<WheelPatch<T, NR>, K>,
     /// Rigid vertical approach δ_v of the wheel, mm.
     pub vertical_approach: T,
     /// Σ N_k cos δ_k reached, N.
@@ -399,7 +397,7 @@ impl<
             exponent: math::c(1.5),
             patches_dv: None,
             reuse: false,
-            full: [None; K],
+            full: [const { None }; K],
         }
     }
 }
@@ -1009,8 +1007,8 @@ pub fn solve_wheel_warm<
 /// The second load mode of the per-wheel solver: the **normal** load `n` (N) of the main
 /// (heaviest-weight) patch is prescribed; its frame and approach are solved together with the
 /// load (the main patch's STRIPES approach equals its geometric approach at the vertical approach
-/// found), and only that patch is solved (`res.n == 1`; other patches the geometry finds carry no
-/// load — `ws.patches.len` tells how many there were). No normal–tangential coupling (the normal
+/// found), and only that patch is solved (`res.patches.len() == 1`; other patches the geometry
+/// finds carry no load — `ws.patches.len` tells how many there were). No normal–tangential coupling (the normal
 /// load is given): `coupling_rounds` is 1. `vertical_load` reports N cos δ of the main patch.
 ///
 /// Errors: `NonPositive("N")`, otherwise as [`solve_wheel`].
@@ -1074,7 +1072,7 @@ fn solve<
     ws.exponent = math::c(1.5);
     ws.patches_dv = None;
     ws.reuse = false;
-    ws.full = [None; K];
+    ws.full = [const { None }; K];
     let mut dv = math::c::<T>(0.05);
     // warm start: δ_v scaled by the load change, the patches there matched to the state's slots
     let mut warm = false;
@@ -1122,7 +1120,7 @@ fn solve<
         // round's are the final ones when the final split leaves the loads unchanged
         let keep = warm && !W::CELLS;
         let geometry_at_round = ws.geometry_calls;
-        ws.full = [None; K];
+        ws.full = [const { None }; K];
         for k in 0..np {
             let nk = ws.loads[k];
             if !(nk > T::ZERO) {
@@ -1149,7 +1147,7 @@ fn solve<
             };
             let r = match full {
                 Some(r) => {
-                    ws.full[k] = Some((nk, r));
+                    ws.full[k] = Some((nk, r.clone()));
                     r
                 }
                 // only the totals are used here: no cells, no wear (same forces, bit for bit)
@@ -1182,8 +1180,7 @@ fn solve<
         ok &= c;
     }
     let mut res = WheelResult {
-        patches: [None; K],
-        n: 0,
+        patches: heapless::Vec::new(),
         vertical_approach: dv,
         vertical_load: vload,
         iterations: passes,
@@ -1200,13 +1197,13 @@ fn solve<
         }
         let frame = ws.patches.items[k].frame;
         let cr = patch_creepage(geom, &frame, cfg)?;
-        sink.begin_patch(res.n);
+        sink.begin_patch(res.patches.len());
         // the last round's full result if it was solved on these patches at this very load
-        let kept = match ws.full[k] {
+        let kept = match &ws.full[k] {
             Some((n_kept, r))
-                if full_geometry == Some(ws.geometry_calls) && n_kept == nk && !W::CELLS =>
+                if full_geometry == Some(ws.geometry_calls) && *n_kept == nk && !W::CELLS =>
             {
-                Some(r)
+                Some(r.clone())
             }
             _ => None,
         };
@@ -1226,23 +1223,21 @@ fn solve<
             }
         };
         res.converged &= r.converged;
-        if res.n < K {
-            res.patches[res.n] = Some(WheelPatch {
-                frame,
-                creepage: cr,
-                load: nk,
-                result: r,
-            });
-            res.n += 1;
-        }
+        // at most K patches: k < np ≤ K, one push per k
+        let _ = res.patches.push(WheelPatch {
+            frame,
+            creepage: cr,
+            load: nk,
+            result: r,
+        });
     }
-    if res.n == 0 {
+    if res.patches.is_empty() {
         return Err(Error::NoContact);
     }
     if main_only {
-        res.vertical_load = res.patches[..res.n]
+        res.vertical_load = res
+            .patches
             .iter()
-            .flatten()
             .map(|p| p.load * math::cos(p.frame.angle))
             .fold(T::ZERO, |a, b| a + b);
     }

@@ -93,12 +93,10 @@ pub struct RegionResult<T> {
 }
 
 /// Result of one patch.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct PatchResult<T, const NR: usize> {
-    /// Regions.
-    pub regions: [RegionResult<T>; NR],
-    /// Number of regions.
-    pub n_regions: usize,
+    /// The contact regions, in the order of the strip set (at most `NR`).
+    pub regions: heapless::Vec<RegionResult<T>, NR>,
     /// Sum over regions.
     pub totals: Totals<T>,
     /// Normal approach of the STRIPES solution (from the deepest sample), mm.
@@ -486,8 +484,8 @@ fn blend<T: Real, const NR: usize>(
         n_slip: if dominant_split { y.n_slip } else { x.n_slip },
     };
     let split = w >= c::<T>(0.5);
-    let mut out = *m;
-    for q in 0..m.n_regions {
+    let mut out = m.clone();
+    for q in 0..m.regions.len() {
         let mq = m.regions[q];
         let aq = if q < ri {
             a.regions[q]
@@ -557,8 +555,7 @@ fn layout_and_tangential<
     ws.wear.clear();
     let bound = cfg.bound.unwrap_or(cfg.adapt.default_bound());
     let mut res = PatchResult {
-        regions: [RegionResult::default(); NR],
-        n_regions: ws.set.n_regions,
+        regions: heapless::Vec::new(),
         totals: Totals::default(),
         approach: ws.set.delta,
         area: ws.set.total_area,
@@ -572,13 +569,15 @@ fn layout_and_tangential<
         // can lose its contact in the re-solve on the evenly spaced strips: it carries nothing,
         // and the rest of the patch is solved as usual (no NoContact for the whole patch).
         if reg.load <= T::ZERO {
-            res.regions[r] = RegionResult {
-                y_lo: reg.y_lo,
-                y_hi: reg.y_hi,
-                first: reg.first,
-                count: reg.count,
-                ..RegionResult::default()
-            };
+            res.regions
+                .push(RegionResult {
+                    y_lo: reg.y_lo,
+                    y_hi: reg.y_hi,
+                    first: reg.first,
+                    count: reg.count,
+                    ..RegionResult::default()
+                })
+                .map_err(|_| Error::OutOfRange("regions exceed the result's capacity"))?;
             continue;
         }
         let patch =
@@ -612,17 +611,19 @@ fn layout_and_tangential<
                 wmax = math::max(wmax, *d);
             }
         }
-        res.regions[r] = RegionResult {
-            y_lo: reg.y_lo,
-            y_hi: reg.y_hi,
-            first: reg.first,
-            count: reg.count,
-            load: reg.load,
-            pmax: reg.pmax,
-            area: reg.area,
-            totals: t.total,
-            wear_max: wmax,
-        };
+        res.regions
+            .push(RegionResult {
+                y_lo: reg.y_lo,
+                y_hi: reg.y_hi,
+                first: reg.first,
+                count: reg.count,
+                load: reg.load,
+                pmax: reg.pmax,
+                area: reg.area,
+                totals: t.total,
+                wear_max: wmax,
+            })
+            .map_err(|_| Error::OutOfRange("regions exceed the result's capacity"))?;
         res.totals.merge(&t.total);
     }
     Ok(res)
