@@ -277,6 +277,11 @@ pub struct SweepArgs {
     /// or be omitted (as for `wrc solve --table`).
     #[arg(long)]
     pub table: Option<PathBuf>,
+    /// With --table: also run the converged solver's FaStrip-AC (the default pipeline) at every
+    /// shift on the table's track set-up, beside the real-time step in the table, CSV, JSON and
+    /// plots.
+    #[arg(long, requires = "table")]
+    pub compare: bool,
     /// The long names of the options given on the command line (filled in by `main`).
     #[arg(skip)]
     pub given: Vec<String>,

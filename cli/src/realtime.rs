@@ -239,7 +239,7 @@ pub fn sweep(
     let bytes = read_table(path)?;
     // the sweep's own options are not the solve's
     let own = [
-        "dy", "dy-from", "dy-to", "dy-step", "csv", "plot", "json", "table",
+        "dy", "dy-from", "dy-to", "dy-step", "csv", "plot", "json", "table", "compare",
     ];
     let given: Vec<String> = a
         .given
@@ -257,6 +257,21 @@ pub fn sweep(
         let d =
             run_on(&sa, &bytes).map_err(|e| format!("{}: dy = {dy} mm: {e}", path.display()))?;
         docs.push((dy, d));
+    }
+    // --compare: the converged solver's FaStrip-AC at the same states, on the table's set-up
+    let (mut cmp_table, mut cmp_csv) = (String::new(), String::new());
+    let mut compared: Vec<(f64, crate::doc::Document)> = vec![];
+    if a.compare {
+        for (dy, d) in &docs {
+            let mut sa = crate::sweep::solve_args(a, *dy, yaw_of(*dy), None, vec![]);
+            sa.wr.back_to_back = d["inputs"]["back_to_back_mm"].as_f64();
+            sa.wr.gauge = d["inputs"]["gauge_mm"].as_f64().unwrap_or(sa.wr.gauge);
+            sa.common.tangential = crate::args::Tangential::Fastrip;
+            sa.common.flex = Some(crate::args::Flex::Ac);
+            let doc =
+                crate::sweep::converged_state(&sa, *dy, yaw_of(*dy), &mut cmp_table, &mut cmp_csv)?;
+            compared.push((*dy, doc));
+        }
     }
     let f = |p: &serde_json::Value, k: &str| p[k].as_f64().unwrap_or(f64::NAN);
     let cr = |p: &serde_json::Value, k: &str| p["creepage"][k].as_f64().unwrap_or(f64::NAN);
@@ -283,6 +298,7 @@ pub fn sweep(
                 );
             }
         }
+        csv.push_str(&cmp_csv);
         std::fs::write(file, csv).map_err(|e| format!("{}: {e}", file.display()))?;
     }
     if let Some(dir) = &a.plot {
@@ -337,10 +353,17 @@ pub fn sweep(
             path.file_name().unwrap_or_default().to_string_lossy(),
             a.wr.fz
         );
-        crate::plot::sweep_plots(dir, &case, &[("realtime".to_string(), series)])?;
+        let mut all = vec![("realtime".to_string(), series)];
+        if a.compare {
+            all.push(("fastrip-ac (converged)".to_string(), compared.clone()));
+        }
+        crate::plot::sweep_plots(dir, &case, &all)?;
     }
     if a.json {
-        let all: Vec<&serde_json::Value> = docs.iter().map(|d| &d.1).collect();
+        let mut all: Vec<serde_json::Value> = docs.iter().map(|d| d.1.clone()).collect();
+        for (_, d) in &compared {
+            all.push(serde_json::to_value(d).map_err(|e| e.to_string())?);
+        }
         return crate::out(&format!(
             "{}\n",
             serde_json::to_string_pretty(&all).map_err(|e| e.to_string())?
@@ -360,7 +383,26 @@ pub fn sweep(
             );
         }
     }
+    s.push_str(&cmp_table);
     times.sort_by(f64::total_cmp);
+    if a.compare {
+        // the largest difference of the total force, of μF_z
+        let mut worst = (0.0f64, f64::NAN);
+        for ((dy, d), (_, c)) in docs.iter().zip(&compared) {
+            let t = &d["total"];
+            let df = (f(t, "fx_n") - c.total.fx_n).hypot(f(t, "fy_n") - c.total.fy_n)
+                / (a.common.mu * a.wr.fz);
+            if df > worst.0 {
+                worst = (df, *dy);
+            }
+        }
+        let _ = writeln!(
+            s,
+            "real-time step against the converged FaStrip-AC: largest |ΔF| {:.2} % of μF_z (dy = {} mm)",
+            100.0 * worst.0,
+            worst.1
+        );
+    }
     let _ = writeln!(
         s,
         "realtime path: the fixed-cost step on {} (FaStrip-AC per strip on the table's STRIPES \

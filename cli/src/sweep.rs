@@ -92,6 +92,71 @@ pub fn solve_args(
     }
 }
 
+/// One converged state of the sweep: `sa` (shift `dy` mm, yaw `yaw` mrad, its model in
+/// `sa.common`) through the converged solver; its patches are appended to the sweep's `table`
+/// and `csv`, and its `wrc solve` document returned.
+pub fn converged_state(
+    sa: &SolveArgs,
+    dy: f64,
+    yaw: f64,
+    table: &mut String,
+    csv: &mut String,
+) -> Result<Document, String> {
+    let (tang, flex) = (sa.common.tangential, sa.common.flex.unwrap_or(Flex::Ac));
+    let s = match (sa.common.precision, sa.common.cells) {
+        (Precision::F64, 16) => wheelrail::solve::<f64, 16>(sa, false),
+        (Precision::F64, 64) => wheelrail::solve::<f64, 64>(sa, false),
+        (Precision::F64, _) => wheelrail::solve::<f64, 32>(sa, false),
+        (Precision::F32, 16) => wheelrail::solve::<f32, 16>(sa, false),
+        (Precision::F32, 64) => wheelrail::solve::<f32, 64>(sa, false),
+        (Precision::F32, _) => wheelrail::solve::<f32, 32>(sa, false),
+    }
+    .map_err(|e| format!("dy = {dy} mm, {}: {e}", model_name(tang, flex)))?;
+    let model = model_name(tang, flex);
+    let (tname, fname) = model.split_once('-').unwrap_or_default();
+    for (pi, p) in s.patches.iter().enumerate() {
+        writeln!(
+            table,
+            "{:>6.2} {:>14} {:>8.3} {:>8.5} {:>9.2e} {:>9.2e} {:>9.2e} {:>10.1} {:>10.1} {:>11.1} {:>8.1} {:>8.2} {:>6.3}",
+            dy, model, p.y_ref_mm,
+            p.contact_angle_rad, p.creepage.xi, p.creepage.eta, p.creepage.phi_per_mm,
+            p.fn_n, p.fx_n, p.fy_n, p.pmax_mpa, p.area_mm2, p.stick_area_fraction
+        )
+        .ok();
+        writeln!(
+            csv,
+            "{dy},{},{tname},{fname},{pi},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{model}",
+            yaw,
+            p.y_ref_mm,
+            p.contact_angle_rad,
+            p.creepage.xi,
+            p.creepage.eta,
+            p.creepage.phi_per_mm,
+            p.fn_n,
+            p.fx_n,
+            p.fy_n,
+            p.mz_nmm,
+            p.pmax_mpa,
+            p.area_mm2,
+            p.stick_area_fraction,
+            p.wear_depth_max_um,
+            s.status.converged,
+            s.time_us
+        )
+        .ok();
+    }
+    let inputs = json!({
+        "dy_mm": dy, "yaw_mrad": yaw, "model": model, "tangential": tang, "flex": flex,
+        "normal": sa.common.normal.unwrap_or(Normal::Stripes),
+        "wheel": crate::wheelrail::profile_name(sa.wr.wheel.as_deref(), true),
+        "rail": crate::wheelrail::profile_name(sa.wr.rail.as_deref(), false),
+        "fz_n": sa.wr.fz, "back_to_back_mm": sa.wr.back_to_back, "side": sa.wr.side,
+        "mu": sa.common.mu, "e_mpa": sa.common.e_mpa, "nu": sa.common.nu,
+        "strips": sa.common.strips, "cells": sa.common.cells, "precision": sa.common.precision,
+    });
+    Ok(Document::new(inputs, s.patches, s.status, s.time_us))
+}
+
 /// The CSV header of the sweep (one row per shift, model and patch).
 pub const CSV_HEADER: &str = "dy_mm,yaw_mrad,tangential,flex,patch,y_ref_mm,contact_angle_rad,xi,eta,phi_per_mm,fn_n,fx_n,fy_n,mz_nmm,pmax_mpa,area_mm2,stick_area_fraction,wear_depth_max_um,converged,time_us,model\n";
 
@@ -165,58 +230,8 @@ pub fn run(a: &SweepArgs) -> Result<(), String> {
             if k == 0 && mi == 0 {
                 crate::validate::check_solve(&sa)?;
             }
-            let s = match (sa.common.precision, sa.common.cells) {
-                (Precision::F64, 16) => wheelrail::solve::<f64, 16>(&sa, false),
-                (Precision::F64, 64) => wheelrail::solve::<f64, 64>(&sa, false),
-                (Precision::F64, _) => wheelrail::solve::<f64, 32>(&sa, false),
-                (Precision::F32, 16) => wheelrail::solve::<f32, 16>(&sa, false),
-                (Precision::F32, 64) => wheelrail::solve::<f32, 64>(&sa, false),
-                (Precision::F32, _) => wheelrail::solve::<f32, 32>(&sa, false),
-            }
-            .map_err(|e| format!("dy = {dy} mm, {}: {e}", model_name(tang, flex)))?;
+            let d = converged_state(&sa, dy, yaw_of(dy), &mut table, &mut csv)?;
             let model = model_name(tang, flex);
-            let (tname, fname) = model.split_once('-').unwrap_or_default();
-            for (pi, p) in s.patches.iter().enumerate() {
-                writeln!(
-                    table,
-                    "{:>6.2} {:>14} {:>8.3} {:>8.5} {:>9.2e} {:>9.2e} {:>9.2e} {:>10.1} {:>10.1} {:>11.1} {:>8.1} {:>8.2} {:>6.3}",
-                    dy, model, p.y_ref_mm,
-                    p.contact_angle_rad, p.creepage.xi, p.creepage.eta, p.creepage.phi_per_mm,
-                    p.fn_n, p.fx_n, p.fy_n, p.pmax_mpa, p.area_mm2, p.stick_area_fraction
-                )
-                .ok();
-                writeln!(
-                    csv,
-                    "{dy},{},{tname},{fname},{pi},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{model}",
-                    yaw_of(dy),
-                    p.y_ref_mm,
-                    p.contact_angle_rad,
-                    p.creepage.xi,
-                    p.creepage.eta,
-                    p.creepage.phi_per_mm,
-                    p.fn_n,
-                    p.fx_n,
-                    p.fy_n,
-                    p.mz_nmm,
-                    p.pmax_mpa,
-                    p.area_mm2,
-                    p.stick_area_fraction,
-                    p.wear_depth_max_um,
-                    s.status.converged,
-                    s.time_us
-                )
-                .ok();
-            }
-            let inputs = json!({
-                "dy_mm": dy, "yaw_mrad": yaw_of(dy), "model": model, "tangential": tang, "flex": flex,
-                "normal": sa.common.normal.unwrap_or(Normal::Stripes),
-                "wheel": crate::wheelrail::profile_name(sa.wr.wheel.as_deref(), true),
-                "rail": crate::wheelrail::profile_name(sa.wr.rail.as_deref(), false),
-                "fz_n": sa.wr.fz, "back_to_back_mm": sa.wr.back_to_back, "side": sa.wr.side,
-                "mu": sa.common.mu, "e_mpa": sa.common.e_mpa, "nu": sa.common.nu,
-                "strips": sa.common.strips, "cells": sa.common.cells, "precision": sa.common.precision,
-            });
-            let d = Document::new(inputs, s.patches, s.status, s.time_us);
             if series.len() <= mi {
                 series.push((model.clone(), vec![]));
             }

@@ -1119,6 +1119,19 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
         rows.lines().nth(1).unwrap().ends_with(",realtime"),
         "{rows}"
     );
+    // --compare: the converged FaStrip-AC beside the step, at the table's back-to-back
+    let both = json(&["sweep", "--table", ts, "--compare", "--dy", "1", "--json"]);
+    let both = both.as_array().expect("an array of documents");
+    assert_eq!(both.len(), 2);
+    assert_eq!(both[0]["status"]["path"], "realtime");
+    assert_eq!(both[1]["status"]["path"], "converged");
+    assert_eq!(both[1]["inputs"]["back_to_back_mm"], 1353.0);
+    let g = |d: &serde_json::Value, k: &str| d["total"][k].as_f64().unwrap();
+    let df = (g(&both[0], "fx_n") - g(&both[1], "fx_n"))
+        .hypot(g(&both[0], "fy_n") - g(&both[1], "fy_n"));
+    assert!(df <= 0.01 * 0.3 * 83300.0, "--compare: |ΔF| = {df} N");
+    let e = fails_with(&["sweep", "--compare", "--dy", "1"]);
+    assert!(e.contains("--table"), "{e}");
     let e = fails_with(&["sweep", "--table", ts, "--flex", "kp"]);
     assert!(e.contains("--flex is fixed by the table"), "{e}");
     let e = fails_with(&["sweep", "--table", ts, "--dy-from", "0", "--dy-to", "5"]);
