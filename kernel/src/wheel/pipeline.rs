@@ -92,6 +92,9 @@ pub struct RegionResult<T> {
     pub wear_max: T,
 }
 
+/// More regions than a [`PatchResult`] holds (the strip set has more than `NR`).
+const REGIONS_FULL: Error = Error::OutOfRange("regions exceed the result's capacity");
+
 /// Result of one patch.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PatchResult<T, const NR: usize> {
@@ -565,19 +568,19 @@ fn layout_and_tangential<
     };
     for r in 0..ws.set.n_regions {
         let reg = ws.set.regions[r];
+        // the region's place in the strip set; the rest 0 until solved
+        let placed = RegionResult {
+            y_lo: reg.y_lo,
+            y_hi: reg.y_hi,
+            first: reg.first,
+            count: reg.count,
+            ..RegionResult::default()
+        };
         // A sliver region of the fine solution (e.g. one sample wide at the edge of the overlap)
         // can lose its contact in the re-solve on the evenly spaced strips: it carries nothing,
         // and the rest of the patch is solved as usual (no NoContact for the whole patch).
         if reg.load <= T::ZERO {
-            res.regions
-                .push(RegionResult {
-                    y_lo: reg.y_lo,
-                    y_hi: reg.y_hi,
-                    first: reg.first,
-                    count: reg.count,
-                    ..RegionResult::default()
-                })
-                .map_err(|_| Error::OutOfRange("regions exceed the result's capacity"))?;
+            res.regions.push(placed).map_err(|_| REGIONS_FULL)?;
             continue;
         }
         let patch =
@@ -613,17 +616,14 @@ fn layout_and_tangential<
         }
         res.regions
             .push(RegionResult {
-                y_lo: reg.y_lo,
-                y_hi: reg.y_hi,
-                first: reg.first,
-                count: reg.count,
                 load: reg.load,
                 pmax: reg.pmax,
                 area: reg.area,
                 totals: t.total,
                 wear_max: wmax,
+                ..placed
             })
-            .map_err(|_| Error::OutOfRange("regions exceed the result's capacity"))?;
+            .map_err(|_| REGIONS_FULL)?;
         res.totals.merge(&t.total);
     }
     Ok(res)
