@@ -36,8 +36,8 @@
 //! above, and every branch that would skip work is evaluated and discarded instead: a slot
 //! without a patch here runs on stand-in strips under stand-in creepages, an empty strip on a
 //! stand-in strip, and [`strip_forces`] computes both adhesion forms and one full slip zone for
-//! every strip. The instruction count then varies by 1–9 % over the states of the firmware's
-//! sweep (libm's own branches and the Kalker table's two forms) instead of 25–45 %: the worst
+//! every strip. The worst of the firmware sweep's 1024 states then costs 2–7 % more than the
+//! median (libm's own branches and the Kalker table's two forms) instead of 25–45 %: the worst
 //! case is the typical case, and a table with more slots costs proportionally more.
 //!
 //! What it neglects against [`crate::wheel::solve_wheel`] (its table was built by it): the
