@@ -222,14 +222,7 @@ fn solve(a: &SolveArgs) -> Result<(), String> {
             &Document::new(inputs_json(a), patches, status, s.time_us),
         )
     } else {
-        let s = match (c.precision, c.cells) {
-            (Precision::F64, 16) => wheelrail::solve::<f64, 16>(a, keep),
-            (Precision::F64, 32) => wheelrail::solve::<f64, 32>(a, keep),
-            (Precision::F64, _) => wheelrail::solve::<f64, 64>(a, keep),
-            (Precision::F32, 16) => wheelrail::solve::<f32, 16>(a, keep),
-            (Precision::F32, 32) => wheelrail::solve::<f32, 32>(a, keep),
-            (Precision::F32, _) => wheelrail::solve::<f32, 64>(a, keep),
-        }?;
+        let s = wheelrail::solve_as_asked(a, keep)?;
         let mut status = s.status;
         if let Some(dir) = &a.plot {
             plot::write_all(

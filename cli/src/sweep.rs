@@ -1,7 +1,7 @@
 //! `wrc sweep`: the lateral-shift sweep of An et al. (2019) with all six simplified models
 //! (FASTSIM and FaStrip × Kik–Piotrowski, Linder, Ayasse–Chollet) on the kernel's STRIPES pressure.
 
-use crate::args::{Flex, Normal, Precision, SolveArgs, SweepArgs, Tangential};
+use crate::args::{Flex, Normal, SolveArgs, SweepArgs, Tangential};
 use crate::doc::Document;
 use crate::wheelrail;
 use serde_json::json;
@@ -103,15 +103,8 @@ pub fn converged_state(
     csv: &mut String,
 ) -> Result<Document, String> {
     let (tang, flex) = (sa.common.tangential, sa.common.flex.unwrap_or(Flex::Ac));
-    let s = match (sa.common.precision, sa.common.cells) {
-        (Precision::F64, 16) => wheelrail::solve::<f64, 16>(sa, false),
-        (Precision::F64, 64) => wheelrail::solve::<f64, 64>(sa, false),
-        (Precision::F64, _) => wheelrail::solve::<f64, 32>(sa, false),
-        (Precision::F32, 16) => wheelrail::solve::<f32, 16>(sa, false),
-        (Precision::F32, 64) => wheelrail::solve::<f32, 64>(sa, false),
-        (Precision::F32, _) => wheelrail::solve::<f32, 32>(sa, false),
-    }
-    .map_err(|e| format!("dy = {dy} mm, {}: {e}", model_name(tang, flex)))?;
+    let s = wheelrail::solve_as_asked(sa, false)
+        .map_err(|e| format!("dy = {dy} mm, {}: {e}", model_name(tang, flex)))?;
     let model = model_name(tang, flex);
     let (tname, fname) = model.split_once('-').unwrap_or_default();
     for (pi, p) in s.patches.iter().enumerate() {

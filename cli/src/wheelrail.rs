@@ -229,6 +229,20 @@ pub(crate) fn adaptation<T: Real>(flex: Option<Flex>) -> Adaptation<T> {
     }
 }
 
+/// Solves a wheel/rail case in the precision (`--precision`) and with the cells per strip
+/// (`--cells`: 16, 32 or 64, checked by `validate`) that `args` asks for.
+pub fn solve_as_asked(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
+    use crate::args::Precision;
+    match (args.common.precision, args.common.cells) {
+        (Precision::F64, 16) => solve::<f64, 16>(args, keep),
+        (Precision::F64, 32) => solve::<f64, 32>(args, keep),
+        (Precision::F64, _) => solve::<f64, 64>(args, keep),
+        (Precision::F32, 16) => solve::<f32, 16>(args, keep),
+        (Precision::F32, 32) => solve::<f32, 32>(args, keep),
+        (Precision::F32, _) => solve::<f32, 64>(args, keep),
+    }
+}
+
 /// Solves a wheel/rail case in precision `T` with `C` cells per strip.
 pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<Solved, String> {
     let cm = &args.common;

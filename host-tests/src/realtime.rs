@@ -378,25 +378,19 @@ pub fn compare<const K: usize, const ST: usize>(
     out
 }
 
-/// ΣF_x, ΣF_y of the closed-form strip forces (`fastrip::strip_forces`) on a STRIPES strip set
-/// at creepage `cr` and friction `mu`, the strips as the step builds them (Kalker's C_ij at the
-/// local ellipse ratio).
-fn closed_form_on<const S: usize, const NR: usize>(
+/// Strip `j` of a STRIPES strip set as the real-time step builds it (Kalker's C_ij at the local
+/// ellipse ratio n_j/m_j, floored at 1e-3): `None` for a strip without contact.
+pub fn step_strip<const S: usize, const NR: usize>(
     set: &wrc_kernel::stripes::StripSet<f64, S, NR>,
-    cr: &wrc_kernel::patch::Creepage<f64>,
-    mu: f64,
-    mat: &Material<f64>,
-) -> (f64, f64) {
-    let (mut fx, mut fy) = (0.0, 0.0);
-    for j in 0..set.n_strips.min(S) {
-        if !(set.a[j] > 0.0 && set.pmax[j] > 0.0) {
-            continue;
-        }
-        let g = set.n_over_m[j].max(1e-3);
-        let Ok(kc) = wrc_kernel::kalker::coefficients(1.0 / g, mat.nu) else {
-            continue;
-        };
-        let st = wrc_kernel::patch::Strip {
+    j: usize,
+    nu: f64,
+) -> Option<Result<wrc_kernel::patch::Strip<f64>, wrc_kernel::Error>> {
+    if !(set.a[j] > 0.0 && set.pmax[j] > 0.0) {
+        return None;
+    }
+    let g = set.n_over_m[j].max(1e-3);
+    Some(
+        wrc_kernel::kalker::coefficients(1.0 / g, nu).map(|kc| wrc_kernel::patch::Strip {
             y: set.y[j],
             dy: set.dy[j],
             a: set.a[j],
@@ -408,6 +402,22 @@ fn closed_form_on<const S: usize, const NR: usize>(
             c33: kc.c33,
             sqrt_b_over_a: g.sqrt(),
             ..wrc_kernel::patch::Strip::default()
+        }),
+    )
+}
+
+/// ΣF_x, ΣF_y of the closed-form strip forces (`fastrip::strip_forces`) on a STRIPES strip set
+/// at creepage `cr` and friction `mu`, the strips as the step builds them ([`step_strip`]).
+fn closed_form_on<const S: usize, const NR: usize>(
+    set: &wrc_kernel::stripes::StripSet<f64, S, NR>,
+    cr: &wrc_kernel::patch::Creepage<f64>,
+    mu: f64,
+    mat: &Material<f64>,
+) -> (f64, f64) {
+    let (mut fx, mut fy) = (0.0, 0.0);
+    for j in 0..set.n_strips.min(S) {
+        let Some(Ok(st)) = step_strip(set, j, mat.nu) else {
+            continue;
         };
         if let Ok((a, b, _)) = wrc_kernel::fastrip::strip_forces(&st, cr, mu, mat.g, mat.nu) {
             fx += a;

@@ -3,7 +3,7 @@
 //! wear rate against the converged per-wheel solver's on the same states (S1002/UIC60, 1353 mm,
 //! right wheel, the examples' table).
 
-use wrc_host_tests::realtime::{s1002_uic60_table, standard_spec};
+use wrc_host_tests::realtime::{s1002_uic60_table, standard_spec, step_strip};
 use wrc_host_tests::wheelrail::{tables, NODES, R0, SWEEP_SPEED};
 use wrc_kernel::geometry::{
     equilibrium_roll, Kinematics, Side, TrackSetup, WheelRail, WheelsetPose,
@@ -177,25 +177,11 @@ fn closed_form_follows_the_cell_fastrip_into_deep_flange_contact() {
             let set = &ws.pipeline.set;
             let (mut fx, mut fy) = (0.0, 0.0);
             for j in 0..set.n_strips {
-                if !(set.a[j] > 0.0 && set.pmax[j] > 0.0) {
+                // the strip as the step builds it
+                let Some(st) = step_strip(set, j, mat.nu) else {
                     continue;
-                }
-                // the strip as the step builds it: Kalker's C_ij at the local ellipse ratio
-                let g = set.n_over_m[j].max(1e-3);
-                let kc = wrc_kernel::kalker::coefficients(1.0 / g, mat.nu).unwrap();
-                let st = wrc_kernel::patch::Strip {
-                    y: set.y[j],
-                    dy: set.dy[j],
-                    a: set.a[j],
-                    xc: set.xc[j],
-                    p_hat: set.pmax[j],
-                    c11: kc.c11,
-                    c22: kc.c22,
-                    c23: kc.c23,
-                    c33: kc.c33,
-                    sqrt_b_over_a: g.sqrt(),
-                    ..Default::default()
                 };
+                let st = st.unwrap();
                 let (a, b, _) =
                     wrc_kernel::fastrip::strip_forces(&st, &p.creepage, MU, mat.g, mat.nu).unwrap();
                 fx += a;

@@ -947,12 +947,13 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
     let e4 = (e8.0 * e8.0 - e8.1 * e8.1, T::TWO * e8.0 * e8.1);
     let e = (e4.0 * e4.0 - e4.1 * e4.1, T::TWO * e4.0 * e4.1);
     let h = c::<T>(8.0) * asin_small(e8.1);
-    let v0 = f.adhesion_dir(onset.0);
+    // FASTSIM's adhesion direction at its slip onset: where both marches below start
+    let v_onset = f.adhesion_dir(onset.0);
     // one step from the onset through the span's midpoint; at an onset on the leading edge
     // (sin θ_F = 0) the rate is singular there: the first stage is taken at the midpoint
     let mid = step_down(onset, e);
     let at = if onset.1 > T::ZERO { onset } else { mid };
-    let v = computed(ros2(f, v0, h, at, mid, T::ONE).1);
+    let v = computed(ros2(f, v_onset, h, at, mid, T::ONE).1);
     let mut u: Option<(T, T)> = if upstream { Some(v) } else { None };
     // SLIP_STEPS intervals of h = θ_top/SLIP_STEPS: (cos, sin) of h/4 by SLIP_HALVINGS
     // halvings, h/2 doubled
@@ -962,7 +963,6 @@ fn slip_zone<T: Real>(f: &DirectionField<T>, top: (T, T), onset: (T, T)) -> (T, 
     }
     let hh = (hq.0 * hq.0 - hq.1 * hq.1, T::TWO * hq.0 * hq.1);
     let h = c::<T>(4.0) * asin_small(hq.1);
-    let v_onset = f.adhesion_dir(onset.0);
     let (mut fx, mut fy, mut xpy) = (T::ZERO, T::ZERO, T::ZERO);
     let mut hi = top; // upper node of the interval
     for k in 0..SLIP_STEPS {
