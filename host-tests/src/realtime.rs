@@ -120,6 +120,17 @@ impl Case {
         &self,
         spec: &TableSpec<T>,
     ) -> Result<(Vec<u8>, BuildReport), Error> {
+        self.table_of::<T, K, ST>(spec, &Material::steel())
+    }
+
+    /// [`Case::table`] for the material `mat` (e.g. CONTACT's in the Manchester runs).
+    ///
+    /// Errors: as [`Case::table`].
+    pub fn table_of<T: Real, const K: usize, const ST: usize>(
+        &self,
+        spec: &TableSpec<T>,
+        mat: &Material<T>,
+    ) -> Result<(Vec<u8>, BuildReport), Error> {
         let (w, r) = manchester_tables::<T>(&SmoothOptions::default())
             .map_err(|_| Error::BadProfile("built-in S1002/UIC60 tables"))?;
         let mut out = vec![0u8; spec.capacity_bytes(K, ST)];
@@ -131,7 +142,7 @@ impl Case {
             &w,
             &self.setup(),
             self.side,
-            &Material::steel(),
+            mat,
             &cfg,
             spec,
             &mut rows,

@@ -280,3 +280,96 @@ fn closed_form_follows_a_fast_turning_rigid_slip_on_a_long_strip() {
         assert!(d <= limit, "{:.2} % > {:.2} %", 100.0 * d, 100.0 * limit);
     }
 }
+
+/// The real-time step's FaStrip runs a slot's strips side by side (`strip_forces_lanes`, in
+/// groups of `fastrip::LANES`: 16 on 64-bit hosts, 1 on the microcontrollers): every strip's
+/// forces must be bit-identical to `strip_forces` of that strip alone, whatever its group (16, 4
+/// or 1 here) and its neighbours, over strips with and without slip zone, FASTSIM strips (failing
+/// the bound check), set and Kalker flexibilities, empty strips and creepages from 1e-5 to 5e-2
+/// with spin.
+#[test]
+fn strips_side_by_side_are_bit_identical_to_one_at_a_time() {
+    use wrc_kernel::fastrip::{strip_forces, strip_forces_lanes};
+    use wrc_kernel::patch::{Creepage, Flexibilities, Strip};
+    let mut seed: u64 = 0x2545_f491_4f6c_dd1d;
+    let mut rnd = || {
+        seed ^= seed << 13;
+        seed ^= seed >> 7;
+        seed ^= seed << 17;
+        (seed >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mat = Material::<f64>::steel();
+    let (mut slipping, mut checked) = (0, 0);
+    for q in 0..400 {
+        let sc = [1e-5, 1e-4, 1e-3, 1e-2, 5e-2][q % 5];
+        let cr = Creepage {
+            xi: sc * (2.0 * rnd() - 1.0),
+            eta: sc * (2.0 * rnd() - 1.0),
+            phi: if q % 7 == 0 {
+                0.0
+            } else {
+                3e-3 * (2.0 * rnd() - 1.0)
+            },
+        };
+        let mu = 0.1 + 0.4 * rnd();
+        let strips: Vec<Strip<f64>> = (0..37)
+            .map(|j| {
+                let g = 0.05 + 0.95 * rnd();
+                let kc = wrc_kernel::kalker::coefficients(1.0 / g, mat.nu).unwrap();
+                let flex = if (q + j) % 3 == 0 {
+                    Flexibilities {
+                        l1: 1e-5 + 5e-5 * rnd(),
+                        l2: 1e-5 + 5e-5 * rnd(),
+                        l3: 1e-5 + 5e-5 * rnd(),
+                    }
+                } else {
+                    Flexibilities::default()
+                };
+                Strip {
+                    y: -5.0 + 10.0 * rnd(),
+                    dy: 0.05 + rnd(),
+                    a: if (q + j) % 11 == 0 {
+                        0.0
+                    } else {
+                        0.5 + 20.0 * rnd()
+                    },
+                    xc: -1.0 + 2.0 * rnd(),
+                    p_hat: 100.0 + 1500.0 * rnd(),
+                    flex,
+                    c11: kc.c11,
+                    c22: kc.c22,
+                    c23: kc.c23,
+                    c33: kc.c33,
+                    sqrt_b_over_a: g.sqrt(),
+                }
+            })
+            .collect();
+        // 37 = 16 + 16 + 4 + 1
+        let mut all = vec![];
+        for g in strips[..32].chunks(16) {
+            let g: &[Strip<f64>; 16] = g.try_into().unwrap();
+            all.extend(strip_forces_lanes(g, &cr, mu, mat.g, mat.nu).unwrap());
+        }
+        let g: &[Strip<f64>; 4] = strips[32..36].try_into().unwrap();
+        all.extend(strip_forces_lanes(g, &cr, mu, mat.g, mat.nu).unwrap());
+        let g: &[Strip<f64>; 1] = strips[36..].try_into().unwrap();
+        all.extend(strip_forces_lanes(g, &cr, mu, mat.g, mat.nu).unwrap());
+        for (s, got) in strips.iter().zip(&all) {
+            let one = strip_forces(s, &cr, mu, mat.g, mat.nu).unwrap();
+            assert_eq!(
+                (one.0.to_bits(), one.1.to_bits(), one.2.to_bits()),
+                (got.0.to_bits(), got.1.to_bits(), got.2.to_bits()),
+                "strip {s:?} under {cr:?}"
+            );
+            checked += 1;
+            if one.0.hypot(one.1) > 0.5 * mu * std::f64::consts::FRAC_PI_2 * s.a * s.p_hat * s.dy {
+                slipping += 1;
+            }
+        }
+    }
+    // the set holds mostly slipping strips as well as mostly adhering ones
+    assert!(
+        slipping > checked / 5 && slipping < checked * 4 / 5,
+        "{slipping} of {checked}"
+    );
+}

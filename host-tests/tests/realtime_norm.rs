@@ -16,8 +16,10 @@
 //! STRIPES' own mean error and within 2 points of its worst case (the table adds little to the
 //! normal model's error). Measured: sweep pmax 2.08 / 11.09 %, area 3.38 / 10.19 % (STRIPES
 //! 2.11 / 14.16, 3.26 / 10.30 %); band pmax 2.67 / 13.16 %, area 4.74 / 10.29 % (STRIPES 3.07 /
-//! 17.80, 4.74 / 10.53 %). Manchester A-2.2 (10 kN) lies below the tables' load range (15 kN) and
-//! is not run here. Forces against TANG: FaStrip-AC's floored eq. 31 through the step within 0.3
+//! 17.80, 4.74 / 10.53 %). Manchester A-2.2 (10 kN, below these tables' 15 kN) runs on tables of its
+//! own (`step_against_norm_on_manchester_a22`): pmax 0.49 / 2.86 %, area 2.15 / 22.56 % (STRIPES
+//! 0.40 / 2.86, 1.89 / 10.74 %; the 22.6 % at yaw 12 mrad, beyond the step's yaw range, see
+//! there). Forces against TANG: FaStrip-AC's floored eq. 31 through the step within 0.3
 //! points of the converged pipeline's (measured +0.18).
 
 use wrc_host_tests::realtime::CASES;
@@ -220,4 +222,161 @@ fn step_against_norm_and_tang_on_the_sweep() {
         pc(extra)
     );
     assert!(extra <= 0.003, "{:+.3} points > 0.3", pc(extra));
+}
+
+/// Manchester through the step (issue 14: "against NORM … Manchester still hold"):
+/// the 42 rows of CONTACT's exact solutions (S1002/UIC60, 1360 mm, right and left wheel, y_ws
+/// 0 … 10 mm with yaw 2.4 mrad per mm and CONTACT's roll, F_z 10 kN, G = 82 GPa, ν = 0.28) on a
+/// table per wheel built for them: CONTACT's material, the rows' shifts with 1 mm margin, F
+/// 5 … 20 kN in 3 log-spaced loads (the sweep's tables start at 15 kN), equilibrium roll (the
+/// rows' roll differs from the free wheelset's equilibrium roll, mapped by the step). Per wheel, pmax and area
+/// against NORM at the converged solver's patch loads, both under the step's inputs (nominal
+/// rolling at CONTACT's 2000 mm/s, μ 0.3), beside the converged solver's (STRIPES) own errors; asserted as the sweep: within 0.5 points of STRIPES' mean error
+/// and 2 points of its worst case.
+#[test]
+fn step_against_norm_on_manchester_a22() {
+    use wrc_host_tests::realtime::Case;
+    use wrc_host_tests::wheelrail::{mbench_material, mbench_rows, solve_case, NODES};
+    use wrc_kernel::geometry::equilibrium_roll;
+    use wrc_kernel::table::TableSpec;
+    use wrc_kernel::wheel::WheelConfig;
+    let (w, r) = tables().unwrap();
+    let rows = mbench_rows().unwrap();
+    let mat = mbench_material();
+    let mut acc = Acc::default();
+    let mut in_range = vec![];
+    let mut roll_span = 0.0f64;
+    for side in [Side::Right, Side::Left] {
+        let mine: Vec<_> = rows.iter().filter(|row| row.side == side).collect();
+        let dys: Vec<f64> = mine.iter().map(|row| row.pose().dy).collect();
+        let (lo, hi) = (
+            dys.iter().copied().fold(f64::INFINITY, f64::min).floor() - 1.0,
+            dys.iter().copied().fold(f64::NEG_INFINITY, f64::max).ceil() + 1.0,
+        );
+        let spec = TableSpec {
+            dy_min: lo,
+            dy_max: hi,
+            n_dy: ((hi - lo) / 0.5).round() as usize + 1,
+            f_min: 5_000.0,
+            f_max: 20_000.0,
+            n_load: 3,
+            ..Case {
+                back_to_back: 1360.0,
+                side,
+            }
+            .spec()
+        };
+        let case = Case {
+            back_to_back: 1360.0,
+            side,
+        };
+        let (bytes, rep) = case.table_of::<f64, K, ST>(&spec, &mat).unwrap();
+        assert_eq!(rep.not_converged, 0, "{side:?}: table nodes not converged");
+        let t = ContactTable::<f64>::from_bytes(&bytes).unwrap();
+        for row in mine {
+            // the converged solver and NORM under the step's own inputs: nominal rolling at
+            // V = 2000 mm/s, μ 0.3 (`solve_mbench_row` prescribes CONTACT's creepages instead,
+            // whose pitch rate is set for zero net moment: in flange contact the F_y sin δ
+            // coupling then gives other patch loads)
+            let cfg = WheelConfig::recommended(0.3, 2000.0, R0);
+            let cs = solve_case(
+                &row.place(&w, &r).unwrap(),
+                row.fz,
+                &mat,
+                &cfg,
+                &NormGridOptions::default(),
+            )
+            .unwrap();
+            let rt = step::<f64, K, ST>(
+                &t,
+                &StepInput {
+                    pose: row.pose(),
+                    fz: row.fz,
+                    kinematics: Kinematics::nominal(2000.0, R0),
+                    mu: 0.3,
+                },
+            )
+            .unwrap();
+            let eq = equilibrium_roll::<f64, NODES, NODES>(
+                &r,
+                &w,
+                &case.setup(),
+                row.pose().dy,
+                0.0,
+                0.05,
+            )
+            .unwrap()
+            .roll;
+            roll_span = roll_span.max((row.pose().roll - eq).abs());
+            let np = cs.patches.iter().map(|p| p.norm.p_max).fold(0.0, f64::max);
+            let na: f64 = cs.patches.iter().map(|p| p.norm.area).sum();
+            let kpm = cs.patches.iter().map(|p| p.kernel.pmax).fold(0.0, f64::max);
+            let kar: f64 = cs.patches.iter().map(|p| p.kernel.area).sum();
+            let rpm = rt.slots.iter().map(|s| s.pmax).fold(0.0, f64::max);
+            let rar: f64 = rt.slots.iter().map(|s| s.area).sum();
+            // the issue's yaw range is ±10 mrad; turns 2.4 mrad per mm (up to 24 mrad)
+            in_range.push(row.yaw.abs() <= 0.010 + 1e-12);
+            acc.sp.push((rpm / np - 1.0).abs());
+            acc.sa.push((rar / na - 1.0).abs());
+            acc.kp.push((kpm / np - 1.0).abs());
+            acc.ka.push((kar / na - 1.0).abs());
+            println!(
+                "{}: pmax step {:+.1} % STRIPES {:+.1} %, area step {:+.1} % STRIPES {:+.1} % (NORM {np:.0} MPa, {na:.1} mm²)",
+                row.label(),
+                100.0 * (rpm / np - 1.0),
+                100.0 * (kpm / np - 1.0),
+                100.0 * (rar / na - 1.0),
+                100.0 * (kar / na - 1.0)
+            );
+        }
+    }
+    let (sp, sa, kp, ka) = (&acc.sp, &acc.sa, &acc.kp, &acc.ka);
+    let pc = |x: f64| 100.0 * x;
+    println!(
+        "Manchester A-2.2 against NORM, per wheel, mean / max %: step pmax {:.2} / {:.2}, area {:.2} / {:.2}; STRIPES pmax {:.2} / {:.2}, area {:.2} / {:.2} ({} cases; roll off the table's up to {:.2} mrad)",
+        pc(mean(sp)),
+        pc(max(sp)),
+        pc(mean(sa)),
+        pc(max(sa)),
+        pc(mean(kp)),
+        pc(max(kp)),
+        pc(mean(ka)),
+        pc(max(ka)),
+        sp.len(),
+        1e3 * roll_span
+    );
+    assert_eq!(sp.len(), 42);
+    // all rows: the means within 0.5 points of STRIPES' (as the sweep and the band)
+    assert!(mean(sp) <= mean(kp) + 0.005, "pmax: step vs STRIPES");
+    assert!(mean(sa) <= mean(ka) + 0.005, "area: step vs STRIPES");
+    // rows within the issue's yaw range (|ψ| ≤ 10 mrad, 18 of 42): every case within 2 points
+    // of STRIPES' worst
+    let within = |v: &[f64]| -> Vec<f64> {
+        v.iter()
+            .zip(&in_range)
+            .filter(|(_, &k)| k)
+            .map(|(x, _)| *x)
+            .collect()
+    };
+    let (isp, isa, ikp, ika) = (within(sp), within(sa), within(kp), within(ka));
+    println!(
+        "|yaw| ≤ 10 mrad ({} rows): step pmax max {:.2} %, area max {:.2} %; STRIPES {:.2} / {:.2} %",
+        isp.len(),
+        pc(max(&isp)),
+        pc(max(&isa)),
+        pc(max(&ikp)),
+        pc(max(&ika))
+    );
+    assert!(max(&isp) <= max(&ikp) + 0.02, "pmax max: step vs STRIPES");
+    assert!(max(&isa) <= max(&ika) + 0.02, "area max: step vs STRIPES");
+    // beyond it the table's yaw-0 gap shows at the flange root: R y_ws 5.0 (ψ = 12 mrad) area
+    // −22.6 % against STRIPES' +4.6 % (at ψ = 0 the step is within 0.8 % of the converged
+    // solver there: the patch moves 0.5 mm and grows by a quarter with the yaw, which the
+    // first-order x-shift of the step does not hold, docs/realtime.md); pmax stays within the
+    // bound. Kept from growing at the measured worst.
+    assert!(
+        max(sp) <= max(kp) + 0.02,
+        "pmax max (all rows): step vs STRIPES"
+    );
+    assert!(max(sa) <= 0.23, "area max (all rows) {:.1} %", pc(max(sa)));
 }

@@ -29,6 +29,8 @@ pub mod tangential;
 pub mod wear;
 pub mod wheel;
 
+mod lanes;
+
 pub mod error;
 pub mod material;
 pub mod math;

@@ -23,7 +23,8 @@
 //!    reference point moved along x by the pose's yaw (first order; the table is built at yaw 0).
 //!    Contact angle, yaw and roll enter through their sines and cosines by series
 //!    ([`math::sin_cos_small`]): no library trigonometry per call.
-//! 5. **FaStrip forces per strip in closed form** ([`strip_forces`]).
+//! 5. **FaStrip forces per strip in closed form** ([`strip_forces`](crate::fastrip::strip_forces)), the slot's strips side by
+//!    side ([`strip_forces_lanes`]: [`LANES`] at once on 64-bit hosts, same results).
 //!
 //! **Two entry points, one computation.** The normal–tangential coupling (steps 2–5, through
 //! r_k) runs [`COLD_ROUNDS`] = 2 rounds from r_k = 0 in [`step`], for a single state or the first
@@ -35,7 +36,7 @@
 //! **Constant cost.** Every loop runs over the table's slots and strips and the fixed counts
 //! above, and every branch that would skip work is evaluated and discarded instead: a slot
 //! without a patch here runs on stand-in strips under stand-in creepages, an empty strip on a
-//! stand-in strip, and [`strip_forces`] computes both adhesion forms and one full slip zone for
+//! stand-in strip, and [`strip_forces`](crate::fastrip::strip_forces) computes both adhesion forms and one full slip zone for
 //! every strip. The worst of the firmware sweep's 1024 states then costs 2–7 % more than the
 //! median (libm's own branches and the Kalker table's two forms) instead of 25–45 %: the worst
 //! case is the typical case, and a table with more slots costs proportionally more.
@@ -44,13 +45,13 @@
 //! geometry's dependence on yaw, the part of a roll other than the table's that the roll mapping
 //! does not hold (it keeps the node's wheel point and patch; where the contact jumps or the rail's
 //! curvature changes under the patch the rolled contact differs), the cell grid of FaStrip
-//! (closed form, see [`strip_forces`] for the differences), and interpolation between nodes.
+//! (closed form, see [`strip_forces`](crate::fastrip::strip_forces) for the differences), and interpolation between nodes.
 //! Measured against the converged solver in host-tests `realtime_step`.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
 use crate::error::{check_finite, check_positive, Error};
-use crate::fastrip::{fastrip, strip_forces, FastripSettings};
+use crate::fastrip::{fastrip, strip_forces_lanes, FastripSettings, LANES};
 use crate::geometry::{creepages_trig, Kinematics, PatchFrame, PoseTrig, Side, WheelsetPose};
 use crate::kalker;
 use crate::kalker::KalkerCoefficients;
@@ -373,7 +374,7 @@ pub struct StepWear<T, const K: usize, const ST: usize> {
 /// loaded slot's strips, on `C` cells per strip over the slot's longest strip: every contact
 /// cell goes to `sink` with strip index k·`ST` + j (slot k, strip j), and the KTH wear of the
 /// slipping cells per strip is returned. The forces stay the closed form's; those of the cells
-/// differ from them as the cell FaStrip from [`strip_forces`] (within 0.14 % of μN on Hertz
+/// differ from them as the cell FaStrip from [`strip_forces`](crate::fastrip::strip_forces) (within 0.14 % of μN on Hertz
 /// patches at 400 cells per strip, more at coarse grids).
 ///
 /// Its cost is the step's plus the cell FaStrip's on ST × C cells per slot (BENCHMARKS.md);
@@ -696,36 +697,55 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             let (mut fx, mut fy, mut mz) = (T::ZERO, T::ZERO, T::ZERO);
             // the loaded strips, for the cell fields of the last round (empty: a = 0)
             let mut kept = [Strip::default(); ST];
-            for (q, &(a, p)) in strips.iter().enumerate().take(st) {
-                let g = at(table, &c, base + 2 * st + q);
-                let kc = kalker::coefficients(T::ONE / math::max(g, math::c(1e-3)), nu)?;
-                let real = loaded && a > T::ZERO && p > T::ZERO;
-                let s = if real {
-                    Strip {
-                        y: ylo + (T::from_usize(q) + T::HALF) * w,
-                        dy: w,
-                        a,
-                        xc: T::ZERO,
-                        p_hat: p * scale,
-                        c11: kc.c11,
-                        c22: kc.c22,
-                        c23: kc.c23,
-                        c33: kc.c33,
-                        sqrt_b_over_a: math::sqrt(g),
-                        ..Strip::default()
+            // the slot's strips in groups of `fastrip::LANES` side by side (1 on the
+            // microcontrollers; on 64-bit hosts a last partial group is completed by stand-ins,
+            // discarded): strip q, or a stand-in where it carries nothing
+            let mut q0 = 0;
+            while q0 < st {
+                let mut real = [false; LANES];
+                let mut group = [Strip::default(); LANES];
+                for (l, (s, r)) in group.iter_mut().zip(real.iter_mut()).enumerate() {
+                    let q = q0 + l;
+                    if q >= st {
+                        *s = stand_in_strip(q);
+                        continue;
                     }
-                } else {
-                    stand_in_strip(q)
-                };
-                let (sx, sy, sm) = core::hint::black_box(strip_forces(&s, &cr, mu, mat.g, mat.nu)?);
-                if real {
-                    fx += sx;
-                    fy += sy;
-                    mz += sm;
-                    if F::ACTIVE {
-                        kept[q] = s;
+                    let (a, p) = strips[q];
+                    let g = at(table, &c, base + 2 * st + q);
+                    let kc = kalker::coefficients(T::ONE / math::max(g, math::c(1e-3)), nu)?;
+                    *r = loaded && a > T::ZERO && p > T::ZERO;
+                    *s = if *r {
+                        Strip {
+                            y: ylo + (T::from_usize(q) + T::HALF) * w,
+                            dy: w,
+                            a,
+                            xc: T::ZERO,
+                            p_hat: p * scale,
+                            c11: kc.c11,
+                            c22: kc.c22,
+                            c23: kc.c23,
+                            c33: kc.c33,
+                            sqrt_b_over_a: math::sqrt(g),
+                            ..Strip::default()
+                        }
+                    } else {
+                        stand_in_strip(q)
+                    };
+                }
+                let forces =
+                    core::hint::black_box(strip_forces_lanes(&group, &cr, mu, mat.g, mat.nu)?);
+                for l in 0..LANES {
+                    if real[l] {
+                        let (sx, sy, sm) = forces[l];
+                        fx += sx;
+                        fy += sy;
+                        mz += sm;
+                        if F::ACTIVE {
+                            kept[q0 + l] = group[l];
+                        }
                     }
                 }
+                q0 += LANES;
             }
             if F::ACTIVE && last && loaded {
                 fields.slot(k, &kept, load, &cr, mu, &mat, input.kinematics.speed)?;
