@@ -381,8 +381,10 @@ pub fn compare<const K: usize, const ST: usize>(
             table_force: (gx - cx).hypot(gy - cy) / muf,
             angle,
             label: format!(
-                "{label}: F ({fx:.0}, {fy:.0}) step ({gx:.0}, {gy:.0}) closed form ({cx:.0}, {cy:.0}); \
-                 N {n:.0} step {gn:.0}; pmax {pm:.0} step {gp:.0}; area {ar:.1} step {ga:.1}"
+                "{label}: reference converged {} in {} rounds; F ({fx:.0}, {fy:.0}) step ({gx:.0}, {gy:.0}) closed form ({cx:.0}, {cy:.0}); \
+                 N {n:.0} step {gn:.0}; pmax {pm:.0} step {gp:.0}; area {ar:.1} step {ga:.1}",
+                refr.converged,
+                refr.coupling_rounds
             ),
         }));
     }

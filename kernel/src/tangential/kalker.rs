@@ -198,6 +198,22 @@ impl<T: Real> KalkerCoefficients<T> {
     }
 }
 
+/// [`KALKER_TABLE`]'s coefficients rounded to `f32` once, at compile time (the `f32` kernel reads
+/// these instead of converting at run time: [`Real::from_rounded`]).
+const KALKER_TABLE_F32: [[f32; 12]; 19] = {
+    let mut out = [[0.0f32; 12]; 19];
+    let mut i = 0;
+    while i < 19 {
+        let mut j = 0;
+        while j < 12 {
+            out[i][j] = KALKER_TABLE[i].c[j] as f32;
+            j += 1;
+        }
+        i += 1;
+    }
+    out
+};
+
 /// Table index in [`KALKER_TABLE`] of row k (1-based, g = 0.1 k) of case 1 (a/b) or case 2 (b/a).
 fn row_index(case_ab: bool, k: usize) -> usize {
     if case_ab {
@@ -232,17 +248,26 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
     }
     if g >= c(0.101) {
         let x = c::<T>(10.0) * g;
-        let kf = math::floor(x - c(0.005));
-        let k = math::clamp(kf, T::ONE, c(9.0)).to_f64() as usize;
+        // k = floor(x − 0.005) clamped to 1 … 9, by comparisons (no float → integer conversion:
+        // a software call for f32 → f64 → usize on a Cortex-M4F)
+        let y = x - c(0.005);
+        let mut k = 1;
+        for j in 2..=9 {
+            if y >= T::from_usize(j) {
+                k = j;
+            }
+        }
         let f = x - T::from_usize(k);
-        let lo = &KALKER_TABLE[row_index(case_ab, k)].c;
-        let hi = &KALKER_TABLE[row_index(case_ab, k + 1)].c;
+        let (il, ih) = (row_index(case_ab, k), row_index(case_ab, k + 1));
+        let (lo, lo32) = (&KALKER_TABLE[il].c, &KALKER_TABLE_F32[il]);
+        let (hi, hi32) = (&KALKER_TABLE[ih].c, &KALKER_TABLE_F32[ih]);
         let mut out = [T::ZERO; 4];
         for (q, o) in out.iter_mut().enumerate() {
             let mut v = [T::ZERO; 3];
             for (p, vp) in v.iter_mut().enumerate() {
                 let i = 3 * q + p;
-                *vp = f * c::<T>(hi[i]) + (T::ONE - f) * c::<T>(lo[i]);
+                *vp = f * T::from_rounded(hi[i], hi32[i])
+                    + (T::ONE - f) * T::from_rounded(lo[i], lo32[i]);
             }
             *o = poisson(v[0], v[1], v[2], nu);
         }
@@ -276,7 +301,13 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
         let c23 = T::TWO * pi
             / (c::<T>(3.0) * g * math::sqrt(g) * (one_m_nu * lam - T::TWO + c::<T>(4.0) * nu));
         let r = &KALKER_TABLE[18].c;
-        let c33 = poisson(c::<T>(r[9]), c::<T>(r[10]), c::<T>(r[11]), nu);
+        let r32 = &KALKER_TABLE_F32[18];
+        let c33 = poisson(
+            T::from_rounded(r[9], r32[9]),
+            T::from_rounded(r[10], r32[10]),
+            T::from_rounded(r[11], r32[11]),
+            nu,
+        );
         KalkerCoefficients { c11, c22, c23, c33 }.checked()
     }
 }
