@@ -202,6 +202,17 @@ pub enum SlotField {
     YawArea,
 }
 
+/// The slot values that are 0 where the slot has no patch (it keeps a neighbour's frame for
+/// continuity, but carries no load): load share, pmax, area and their yaw coefficients.
+const ABSENT_ZERO: [SlotField; 6] = [
+    SlotField::Share,
+    SlotField::Pmax,
+    SlotField::Area,
+    SlotField::YawShare,
+    SlotField::YawPmax,
+    SlotField::YawArea,
+];
+
 /// Grid and set-up of a table build.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct TableSpec<T> {
@@ -232,6 +243,12 @@ pub struct TableSpec<T> {
 }
 
 impl<T: Real> TableSpec<T> {
+    /// Vertical load of load node `j` (N): `n_load` nodes log-spaced from `f_min` to `f_max`.
+    fn load_node(&self, j: usize) -> T {
+        let uj = T::from_usize(j) / T::from_usize(self.n_load - 1);
+        math::exp(math::ln(self.f_min) * (T::ONE - uj) + math::ln(self.f_max) * uj)
+    }
+
     /// Most shift nodes a build of this spec can produce: max(`n_dy`, `max_dy_nodes`) when
     /// refining, else `n_dy`.
     pub fn dy_capacity(&self) -> usize {
@@ -1034,8 +1051,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
         geom.place_in(rail, wheel, setup, &pose, self.side, spec.grid_step)?;
         let (mut max_patches, mut slots_used) = (0usize, 0usize);
         for j in 0..nl {
-            let uj = T::from_usize(j) / T::from_usize(nl - 1);
-            let f = math::exp(math::ln(spec.f_min) * (T::ONE - uj) + math::ln(spec.f_max) * uj);
+            let f = spec.load_node(j);
             let res = solve_wheel(geom, f, mat, c, ws, &mut ())?;
             self.rep.nodes += 1;
             if !res.converged {
@@ -1180,8 +1196,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 if !cur[j * K..(j + 1) * K].iter().any(|s| s.present) {
                     continue;
                 }
-                let uj = T::from_usize(j) / T::from_usize(nl - 1);
-                let f = math::exp(math::ln(spec.f_min) * (T::ONE - uj) + math::ln(spec.f_max) * uj);
+                let f = spec.load_node(j);
                 let Ok(res) = solve_wheel(geom, f, mat, c, ws, &mut ()) else {
                     continue;
                 };
@@ -1251,12 +1266,9 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 if let Some(s) = from {
                     let e = &mut cur[j * K + k];
                     e.fixed = s.fixed;
-                    e.fixed[SlotField::Share as usize] = T::ZERO;
-                    e.fixed[SlotField::Pmax as usize] = T::ZERO;
-                    e.fixed[SlotField::Area as usize] = T::ZERO;
-                    e.fixed[SlotField::YawShare as usize] = T::ZERO;
-                    e.fixed[SlotField::YawPmax as usize] = T::ZERO;
-                    e.fixed[SlotField::YawArea as usize] = T::ZERO;
+                    for f in ABSENT_ZERO {
+                        e.fixed[f as usize] = T::ZERO;
+                    }
                     e.g = s.g;
                 }
             }
@@ -1420,12 +1432,9 @@ fn backfill_frames<T: Real, const K: usize, const ST: usize>(
                         let oo = o + f as usize * T::BYTES;
                         T::ZERO.write_le(&mut p[oo..oo + T::BYTES]);
                     };
-                    zero(payload, SlotField::Share);
-                    zero(payload, SlotField::Pmax);
-                    zero(payload, SlotField::Area);
-                    zero(payload, SlotField::YawShare);
-                    zero(payload, SlotField::YawPmax);
-                    zero(payload, SlotField::YawArea);
+                    for f in ABSENT_ZERO {
+                        zero(payload, f);
+                    }
                     // the ratios n/m too (strips stay empty)
                     let go = o + (SLOT_FIXED + 2 * ST) * T::BYTES;
                     let sgo = so + (SLOT_FIXED + 2 * ST) * T::BYTES;

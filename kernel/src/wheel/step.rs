@@ -271,6 +271,31 @@ fn at_frame<T: Real>(t: &ContactTable<'_, T>, c: &Cell<T>, v: usize) -> T {
     x
 }
 
+/// A slot's value `v` at yaw ψ (`psi2` = ψ²) with its yaw coefficient `k` (table "Yaw"), floored
+/// at 0 (load share, pmax, area), interpolated bilinearly as [`at`].
+#[inline]
+fn at_yawed<T: Real>(
+    t: &ContactTable<'_, T>,
+    c: &Cell<T>,
+    o: usize,
+    v: SlotField,
+    k: SlotField,
+    psi2: T,
+) -> T {
+    math::max(
+        at(t, c, o + v as usize) + psi2 * at(t, c, o + k as usize),
+        T::ZERO,
+    )
+}
+
+/// A slot's contact angle at yaw ψ (`psi2` = ψ²) as the table holds it (before the roll's turn),
+/// interpolated as the frame ([`at_frame`]).
+#[inline]
+fn angle_yawed<T: Real>(t: &ContactTable<'_, T>, c: &Cell<T>, o: usize, psi2: T) -> T {
+    at_frame(t, c, o + SlotField::Angle as usize)
+        + psi2 * at_frame(t, c, o + SlotField::YawAngle as usize)
+}
+
 /// cos δ + r e, the vertical load per unit normal load of a patch at the contact angle δ
 /// (`sc` = (sin δ, cos δ)) with the creep-force ratio r = F_y/N: e = ∓ sin δ (right/left wheel)
 /// is the vertical component of the patch's lateral axis (module docs).
@@ -581,15 +606,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             let mut sum = T::ZERO;
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
-                let share = math::max(
-                    at(table, &c, o + SlotField::Share as usize)
-                        + psi2 * at(table, &c, o + SlotField::YawShare as usize),
-                    T::ZERO,
-                );
+                let share = at_yawed(table, &c, o, SlotField::Share, SlotField::YawShare, psi2);
                 // (a slot without a patch here adds exactly 0)
-                let ang = at_frame(table, &c, o + SlotField::Angle as usize)
-                    + psi2 * at_frame(table, &c, o + SlotField::YawAngle as usize)
-                    + d_angle;
+                let ang = angle_yawed(table, &c, o, psi2) + d_angle;
                 sum += share * vertical(side, math::sin_cos_small(ang), *r);
             }
             if !(sum > T::ZERO) {
@@ -612,9 +631,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             let o = table.slot_offset(k);
             let fld = |q: SlotField| at(table, &c, o + q as usize);
             let frm = |q: SlotField| at_frame(table, &c, o + q as usize);
-            let yawed = |v: SlotField, k: SlotField| math::max(fld(v) + psi2 * fld(k), T::ZERO);
+            let yawed = |v: SlotField, k: SlotField| at_yawed(table, &c, o, v, k, psi2);
             let load = yawed(SlotField::Share, SlotField::YawShare) * f;
-            let angle_t = frm(SlotField::Angle) + psi2 * frm(SlotField::YawAngle);
+            let angle_t = angle_yawed(table, &c, o, psi2);
             let angle = angle_t + d_angle;
             // 3a. Roll relative to the table's (module docs): the same wheel point, the rail
             // point turned about the rail's centre of curvature, the wheel's arm to it about the
