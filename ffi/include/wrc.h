@@ -14,10 +14,11 @@
 // Most strips per slot a table may have for this library's step.
 #define WRC_MAX_STRIPS 64
 
-// Table format version this library reads (4: only the slots used, the roll mapping's
-// coefficients, yaw's coefficients; versions 1 to 3 are rejected with
+// Table format version this library reads (5: only the slots used, the roll mapping's
+// coefficients for the patch's shape and for its frame, yaw's coefficients; versions 1 to 4
+// are rejected with
 // [`wrc_status::WRC_ERR_TABLE_VERSION`]: rebuild them).
-#define WRC_TABLE_VERSION 4
+#define WRC_TABLE_VERSION 5
 
 // Size of a table's header, bytes.
 #define WRC_TABLE_HEADER_BYTES 128

@@ -36,10 +36,11 @@ use wrc_kernel::{Error, Real};
 pub const WRC_MAX_SLOTS: usize = 4;
 /// Most strips per slot a table may have for this library's step.
 pub const WRC_MAX_STRIPS: usize = 64;
-/// Table format version this library reads (4: only the slots used, the roll mapping's
-/// coefficients, yaw's coefficients; versions 1 to 3 are rejected with
+/// Table format version this library reads (5: only the slots used, the roll mapping's
+/// coefficients for the patch's shape and for its frame, yaw's coefficients; versions 1 to 4
+/// are rejected with
 /// [`wrc_status::WRC_ERR_TABLE_VERSION`]: rebuild them).
-pub const WRC_TABLE_VERSION: u32 = 4;
+pub const WRC_TABLE_VERSION: u32 = 5;
 /// Size of a table's header, bytes.
 pub const WRC_TABLE_HEADER_BYTES: usize = 128;
 
@@ -112,7 +113,8 @@ impl From<Error> for wrc_status {
                 "format version"
                 | "format version 1: rebuild the table"
                 | "format version 2: rebuild the table"
-                | "format version 3: rebuild the table" => WRC_ERR_TABLE_VERSION,
+                | "format version 3: rebuild the table"
+                | "format version 4: rebuild the table" => WRC_ERR_TABLE_VERSION,
                 "precision differs from the caller's" => WRC_ERR_TABLE_PRECISION,
                 _ => WRC_ERR_BAD_TABLE,
             },

@@ -476,13 +476,15 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
         Error::BadTable("magic")
     );
     // format versions 1 (evenly spaced shifts, no node array), 2 (all slots stored, no roll
-    // mapping) and 3 (no yaw coefficients): rebuild
-    assert_eq!(VERSION, 4);
+    // mapping), 3 (no yaw coefficients) and 4 (one roll mapping for the patch's shape and its
+    // frame): rebuild
+    assert_eq!(VERSION, 5);
     for (v, why) in [
         (1u32, "format version 1: rebuild the table"),
         (2, "format version 2: rebuild the table"),
         (3, "format version 3: rebuild the table"),
-        (5, "format version"),
+        (4, "format version 4: rebuild the table"),
+        (6, "format version"),
     ] {
         let mut bad = bytes.clone();
         bad[8..12].copy_from_slice(&v.to_le_bytes());

@@ -202,7 +202,7 @@ int main(int argc, char **argv) {
     in = input_f64(0.0);
     expect("flipped_magic_step", wrc_step_f64(bad, n64, &in, &out), WRC_ERR_TABLE_MAGIC);
     memcpy(bad, t64, n64);
-    bad[8] = 5; /* version 5 (unknown) */
+    bad[8] = 6; /* version 6 (unknown) */
     expect("wrong_version", wrc_table_check_f64(bad, n64, NULL), WRC_ERR_TABLE_VERSION);
     bad[8] = 1; /* version 1 (evenly spaced shifts): rebuild */
     expect("version_1", wrc_table_check_f64(bad, n64, NULL), WRC_ERR_TABLE_VERSION);
@@ -210,6 +210,8 @@ int main(int argc, char **argv) {
     expect("version_2", wrc_table_check_f64(bad, n64, NULL), WRC_ERR_TABLE_VERSION);
     bad[8] = 3; /* version 3 (no yaw coefficients): rebuild */
     expect("version_3", wrc_table_check_f64(bad, n64, NULL), WRC_ERR_TABLE_VERSION);
+    bad[8] = 4; /* version 4 (one roll mapping for shape and frame): rebuild */
+    expect("version_4", wrc_table_check_f64(bad, n64, NULL), WRC_ERR_TABLE_VERSION);
     free(bad);
     expect("truncated_table", wrc_table_check_f64(t64, n64 - 1, NULL), WRC_ERR_TABLE_LENGTH);
     expect("truncated_table_step", wrc_step_f64(t64, n64 - 1, &in, &out), WRC_ERR_TABLE_LENGTH);

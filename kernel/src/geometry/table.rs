@@ -8,7 +8,8 @@
 //! that Σ_k N_k cos δ_k = F) with every patch in a fixed **slot**:
 //! * per node ([`NodeField`]): the wheelset roll used (0, or the two-wheel equilibrium roll of the
 //!   shift, [`TableSpec::equilibrium_roll`]), the wheel centre height of the touching position,
-//!   the vertical approach δ_v, and the roll mapping's equivalent shift per roll c₁, c₂ (below);
+//!   the vertical approach δ_v, and the roll mappings' equivalent shifts per roll c₁, c₂ for the
+//!   patch's shape and c₁ᶠ, c₂ᶠ for its frame (below);
 //! * per slot ([`SlotField`]): the load share N_k/F, the frame (contact angle, rolling radius,
 //!   reference point in the track frame and in the rail file, normal approach), pmax/F^{1/3},
 //!   area/F^{2/3}, the lateral span [y_lo, y_hi] (contact frame) carrying
@@ -60,6 +61,22 @@
 //! frame: the contact angle by ∓Δθ, the wheel's arm to the contact about the axle, the rail point
 //! along the rail by m₁, m₂.
 //!
+//! That mapping keeps the gap exactly while the rail under the patch is one circular arc (turning
+//! an arc about its centre leaves it unchanged), so it is the patch's **shape** (load share,
+//! pmax, area, strips). For a wide, conformal patch across the rail's arcs the rolled contact's
+//! weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360 mm, left wheel, dy
+//! 4.1 mm, 50 kN, roll −5 mrad from equilibrium) the mapped rolling radius was 0.061 mm and the
+//! contact angle 5.6 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ. The
+//! patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
+//! a second mapping, [`NodeField::FrameShiftPerRoll`], calibrated by the solver: each row is
+//! solved again at ±[`ROLL_FIT`] at the pose the first mapping sends to the node (the roll
+//! probe), the node whose wheel angle δ ∓ θ equals the probe contact's is where that pose
+//! belongs, and c₁ᶠ, c₂ᶠ go exactly through both (`calibrate_roll`; the first mapping's where the
+//! probe's contact is on a part of the wheel that touches at no node, e.g. across a contact
+//! jump). On the example the frame's rolling radius is then 0.011 mm off, the angle 0.1 mrad;
+//! over the issue-14 sweep the tread force's P95 went from 2.5 to 1.3 % of μF_z. The step finds
+//! both roots.
+//!
 //! # Yaw
 //! The table is built at yaw 0. A yawed wheel touches the rail with the lowest points of its rows,
 //! which lead on the profile's slope; in the track's cross-section it acts as a wheel of profile
@@ -87,8 +104,8 @@
 //! increasing, ends equal to dy_min and dy_max) and the checksum before use; a wrong, truncated or
 //! damaged table is [`Error::BadTable`], never a panic. Tables of format versions 1 (evenly
 //! spaced shifts, no node array), 2 (every slot of the build's capacity stored, no roll
-//! mapping) and 3 (no yaw coefficients) are rejected with
-//! [`Error::BadTable`]`("format version 1: rebuild the table")` (resp. `2`, `3`): rebuild them
+//! mapping), 3 (no yaw coefficients) and 4 (one roll mapping for shape and frame) are rejected
+//! with [`Error::BadTable`]`("format version 1: rebuild the table")` (resp. `2`, `3`, `4`): rebuild them
 //! (`wrc table`), they are derived data.
 
 #![allow(clippy::neg_cmp_op_on_partial_ord)] // NaN must count as "not positive"
@@ -105,7 +122,7 @@ use core::marker::PhantomData;
 /// Format magic.
 pub const MAGIC: [u8; 8] = *b"WRCTABLE";
 /// Format version of the byte layout.
-pub const VERSION: u32 = 4;
+pub const VERSION: u32 = 5;
 /// Most shift nodes of a table.
 pub const MAX_DY_NODES: usize = 4096;
 /// Halvings of the step's binary search for the shift interval: ⌈log₂ [`MAX_DY_NODES`]⌉, the
@@ -119,7 +136,12 @@ pub const ROW_BUFFERS: usize = 3;
 /// Header size, bytes.
 pub const HEADER_BYTES: usize = 128;
 /// Values per node before the slots (see [`NodeField`]).
-pub const NODE_FIXED: usize = 5;
+pub const NODE_FIXED: usize = 7;
+/// Values per node and load the build keeps besides the node's ([`NodeField`]): the roll
+/// probe's wheel angle and slot at Δθ = +[`ROLL_FIT`] and −[`ROLL_FIT`] (`calibrate_roll`).
+const ROLL_PROBE: usize = 4;
+/// A build row's values per load node: the node's and the roll probe's.
+const ROW_FIXED: usize = NODE_FIXED + ROLL_PROBE;
 /// Values per slot before the strips (see [`SlotField`]).
 pub const SLOT_FIXED: usize = 19;
 /// Roll offset (rad) at which [`build_table`] samples the rail to fit the roll mapping's
@@ -149,6 +171,13 @@ pub enum NodeField {
     ShiftPerRoll,
     /// Its quadratic coefficient c₂, mm/rad².
     ShiftPerRoll2,
+    /// The frame's equivalent shift per roll c₁ᶠ, mm/rad: the node whose contact has the rolled
+    /// pose's wheel point (the same wheel angle δ ∓ θ, so the same rolling radius and contact
+    /// angle), calibrated by the converged solver at roll ±[`ROLL_FIT`] (module docs, "Roll";
+    /// format version 5). [`NodeField::ShiftPerRoll`] keeps the gap's (the patch's shape).
+    FrameShiftPerRoll,
+    /// Its quadratic coefficient c₂ᶠ, mm/rad².
+    FrameShiftPerRoll2,
 }
 
 /// The per-slot fixed values, in their order in the payload.
@@ -264,6 +293,7 @@ impl<T: Real> TableSpec<T> {
     /// [`BuildReport::bytes`] long).
     pub fn capacity_bytes(&self, k: usize, st: usize) -> usize {
         table_bytes::<T>(self.dy_capacity(), self.n_load, k, st)
+            + self.dy_capacity() * self.n_load * ROLL_PROBE * T::BYTES
     }
 }
 
@@ -408,6 +438,7 @@ impl<'a, T: Real> ContactTable<'a, T> {
             1 => return Err(Error::BadTable("format version 1: rebuild the table")),
             2 => return Err(Error::BadTable("format version 2: rebuild the table")),
             3 => return Err(Error::BadTable("format version 3: rebuild the table")),
+            4 => return Err(Error::BadTable("format version 4: rebuild the table")),
             _ => return Err(Error::BadTable("format version")),
         }
         let vb = u32_at(bytes, 12) as usize;
@@ -695,6 +726,8 @@ pub fn build_table<
     let node_bytes = (NODE_FIXED + K * (SLOT_FIXED + 3 * ST)) * T::BYTES;
     // rows are written after room for `cap` nodes and moved behind the node array at the end
     let rows_at = HEADER_BYTES + cap * T::BYTES;
+    // the roll probes after the rows (TableSpec::capacity_bytes)
+    let probe_at = table_bytes::<T>(cap, nl, K, ST);
     let mut geom = WheelRail::<T, N, M>::unplaced(rail, wheel, setup);
     let mut ctx = RowSolve {
         rail,
@@ -708,8 +741,8 @@ pub fn build_table<
     };
     // last rail-file y of every slot seen anywhere (slot identity for re-appearing patches)
     let mut last_y: [Option<T>; K] = [None; K];
-    let mut fx_c = [[T::ZERO; NODE_FIXED]; 256];
-    let mut fx_m = [[T::ZERO; NODE_FIXED]; 256];
+    let mut fx_c = [[T::ZERO; ROW_FIXED]; 256];
+    let mut fx_m = [[T::ZERO; ROW_FIXED]; 256];
     // the creepage criterion's linear-theory force per creepage, over μ = 0.3 (module docs):
     // G·C·A/(μN) with C = 4 (Kalker's C11 ≈ 3.4 … 5), per unit A/N
     let lin = (mat.g * math::c::<T>(4.0 / 0.3), setup.r0);
@@ -734,7 +767,17 @@ pub fn build_table<
         &mut fx_c,
         &mut last_y,
     )?;
-    write_row::<T, K, ST>(out, rows_at, node_bytes, 0, spec.dy_min, &fx_c, cand, nl)?;
+    write_row::<T, K, ST>(
+        out,
+        rows_at,
+        node_bytes,
+        0,
+        spec.dy_min,
+        &fx_c,
+        cand,
+        nl,
+        probe_at,
+    )?;
     ctx.commit(stats);
     prev.copy_from_slice(cand);
     let mut fx_p = fx_c;
@@ -812,7 +855,7 @@ pub fn build_table<
                 }
             }
             // accept the candidate row at r
-            write_row::<T, K, ST>(out, rows_at, node_bytes, n, r, &fx_c, cand, nl)?;
+            write_row::<T, K, ST>(out, rows_at, node_bytes, n, r, &fx_c, cand, nl, probe_at)?;
             ctx.commit(st_c);
             last_y = ly_c;
             prev.copy_from_slice(cand);
@@ -845,6 +888,18 @@ pub fn build_table<
         );
     }
     let total = table_bytes::<T>(n, nl, used, ST);
+    {
+        let (table, rest) = out.split_at_mut(probe_at);
+        calibrate_roll::<T>(
+            &mut table[HEADER_BYTES..total],
+            &rest[..n * nl * ROLL_PROBE * T::BYTES],
+            n,
+            nl,
+            compact,
+            ST,
+            side,
+        );
+    }
     limit_roll_slopes::<T>(&mut out[HEADER_BYTES..total], n, nl, compact);
     let checksum = fnv1a(FNV_OFFSET, &out[HEADER_BYTES..total]);
     let hdr = &mut out[..HEADER_BYTES];
@@ -887,7 +942,7 @@ pub fn build_table<
 /// log-spaced load nodes.
 #[allow(clippy::type_complexity)]
 fn interp_error<T: Real, const K: usize, const ST: usize>(
-    rows: [(&[TableSlot<T, ST>], &[[T; NODE_FIXED]; 256]); 3],
+    rows: [(&[TableSlot<T, ST>], &[[T; ROW_FIXED]; 256]); 3],
     w: T,
     nl: usize,
     loads: (T, T),
@@ -919,7 +974,7 @@ fn interp_error<T: Real, const K: usize, const ST: usize>(
             // the creepages the frame gives (the stored area and share are per F^{2/3}, per F)
             let share = v(m, k, SlotField::Share);
             if m[j * K + k].present && share > T::ZERO {
-                let arm = |s: &[TableSlot<T, ST>], f: &[[T; NODE_FIXED]; 256]| {
+                let arm = |s: &[TableSlot<T, ST>], f: &[[T; ROW_FIXED]; 256]| {
                     v(s, k, SlotField::ZRefTrack) - f[j][cz]
                 };
                 let (al, ar) = (arm(l, fl), arm(r, fr));
@@ -947,7 +1002,8 @@ fn interp_error<T: Real, const K: usize, const ST: usize>(
 }
 
 /// Writes shift row `idx` (node dy and the row's `nl` nodes) of a build: the node into the node
-/// array, the row at `rows_at` + `idx`·`nl`·`node_bytes`.
+/// array, the row at `rows_at` + `idx`·`nl`·`node_bytes`, its roll probe at `probe_at` +
+/// `idx`·`nl`·[`ROLL_PROBE`] values.
 #[allow(clippy::too_many_arguments)]
 fn write_row<T: Real, const K: usize, const ST: usize>(
     out: &mut [u8],
@@ -955,9 +1011,10 @@ fn write_row<T: Real, const K: usize, const ST: usize>(
     node_bytes: usize,
     idx: usize,
     dy: T,
-    fixed: &[[T; NODE_FIXED]; 256],
+    fixed: &[[T; ROW_FIXED]; 256],
     cur: &[TableSlot<T, ST>],
     nl: usize,
+    probe_at: usize,
 ) -> Result<(), Error> {
     let o = HEADER_BYTES + idx * T::BYTES;
     NodeWriter { out, pos: o }.put(dy)?;
@@ -967,7 +1024,7 @@ fn write_row<T: Real, const K: usize, const ST: usize>(
             .get_mut(base..base + node_bytes)
             .ok_or(Error::BadTable("output buffer too small"))?;
         let mut w = NodeWriter { out: dst, pos: 0 };
-        for v in fixed[j] {
+        for &v in &fixed[j][..NODE_FIXED] {
             w.put(v)?;
         }
         for k in 0..K {
@@ -984,6 +1041,16 @@ fn write_row<T: Real, const K: usize, const ST: usize>(
             for v in s.g {
                 w.put(v)?;
             }
+        }
+    }
+    let probe = probe_at + (idx * nl) * ROLL_PROBE * T::BYTES;
+    let dst = out
+        .get_mut(probe..probe + nl * ROLL_PROBE * T::BYTES)
+        .ok_or(Error::BadTable("output buffer too small"))?;
+    let mut w = NodeWriter { out: dst, pos: 0 };
+    for f in fixed.iter().take(nl) {
+        for &v in &f[NODE_FIXED..] {
+            w.put(v)?;
         }
     }
     Ok(())
@@ -1032,7 +1099,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
         prev: &[TableSlot<T, ST>],
         ratio: T,
         cur: &mut [TableSlot<T, ST>],
-        fixed: &mut [[T; NODE_FIXED]; 256],
+        fixed: &mut [[T; ROW_FIXED]; 256],
         last_y: &mut [Option<T>; K],
     ) -> Result<(usize, usize), Error> {
         let spec = self.spec;
@@ -1066,6 +1133,12 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 res.vertical_approach / f23,
                 T::ZERO,
                 T::ZERO,
+                T::ZERO,
+                T::ZERO,
+                T::ZERO,
+                -T::ONE,
+                T::ZERO,
+                -T::ONE,
             ];
             // the equivalent shift per roll, load-share weighted over the patches
             let (mut c1_sum, mut c2_sum, mut s_sum) = (T::ZERO, T::ZERO, T::ZERO);
@@ -1178,8 +1251,12 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 cur[j * K + k] = slot;
             }
             if s_sum > T::ZERO {
-                fixed[j][NodeField::ShiftPerRoll as usize] = c1_sum / s_sum;
-                fixed[j][NodeField::ShiftPerRoll2 as usize] = c2_sum / s_sum;
+                let (c1, c2) = (c1_sum / s_sum, c2_sum / s_sum);
+                fixed[j][NodeField::ShiftPerRoll as usize] = c1;
+                fixed[j][NodeField::ShiftPerRoll2 as usize] = c2;
+                // the frame's until calibrate_roll finds better
+                fixed[j][NodeField::FrameShiftPerRoll as usize] = c1;
+                fixed[j][NodeField::FrameShiftPerRoll2 as usize] = c2;
             }
         }
         // yaw's effect on the gap: every load again at yaw YAW_FIT (same shift and roll, zero
@@ -1239,6 +1316,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 }
             }
         }
+        self.roll_probe::<M, K, ST, WK, NP, NS, NR, S, C, SS>(geom, ws, dy, roll, cur, fixed);
         // empty slots carry the frame of their nearest present node of this row (continuity)
         for k in 0..K {
             for j in 0..nl {
@@ -1275,6 +1353,204 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
         }
         Ok((max_patches, slots_used))
     }
+
+    /// The roll probe of a row (`calibrate_roll`): every load again at the rolls `roll` ±
+    /// [`ROLL_FIT`], each at the shift the roll mapping's own c₁, c₂ send to this node (dy −
+    /// c₁Δθ − c₂Δθ²); the most loaded patch's wheel angle (contact angle less the turn, δ ∓ θ)
+    /// and the slot it continues (reference point on the rail nearest the mapped one within
+    /// [`MATCH_MM`]) go into `fixed[j][NODE_FIXED..]` as (angle, slot) at +, then at −; a slot of
+    /// −1 where the rolled placement or solve fails or no slot matches.
+    #[allow(clippy::too_many_arguments)]
+    fn roll_probe<
+        const M: usize,
+        const K: usize,
+        const ST: usize,
+        const WK: usize,
+        const NP: usize,
+        const NS: usize,
+        const NR: usize,
+        const S: usize,
+        const C: usize,
+        const SS: usize,
+    >(
+        &mut self,
+        geom: &mut WheelRail<'r, T, N, M>,
+        ws: &mut WheelWorkspace<T, WK, NP, NS, NR, S, C, SS>,
+        dy: T,
+        roll: T,
+        cur: &[TableSlot<T, ST>],
+        fixed: &mut [[T; ROW_FIXED]; 256],
+    ) {
+        let spec = self.spec;
+        let (rail, wheel, setup, mat, c) = (self.rail, self.wheel, self.setup, self.mat, self.cfg);
+        let h = math::c::<T>(ROLL_FIT);
+        let sigma = self.side.sign::<T>();
+        for j in 0..spec.n_load {
+            if !cur[j * K..(j + 1) * K].iter().any(|s| s.present) {
+                continue;
+            }
+            let f = spec.load_node(j);
+            let (c1, c2) = (
+                fixed[j][NodeField::ShiftPerRoll as usize],
+                fixed[j][NodeField::ShiftPerRoll2 as usize],
+            );
+            for (q, d_roll) in [h, -h].into_iter().enumerate() {
+                let pose = WheelsetPose {
+                    dy: dy - d_roll * (c1 + c2 * d_roll),
+                    yaw: T::ZERO,
+                    roll: roll + d_roll,
+                };
+                if geom
+                    .place_in(rail, wheel, setup, &pose, self.side, spec.grid_step)
+                    .is_err()
+                {
+                    continue;
+                }
+                let Ok(res) = solve_wheel(geom, f, mat, c, ws, &mut ()) else {
+                    continue;
+                };
+                let mut top: Option<usize> = None;
+                for (p, wp) in res.patches.iter().enumerate() {
+                    if wp.load > T::ZERO && top.is_none_or(|t| wp.load > res.patches[t].load) {
+                        top = Some(p);
+                    }
+                }
+                let Some(p) = top else {
+                    continue;
+                };
+                let wp = &res.patches[p];
+                // the contact angle turns by −Δθ on the right wheel, +Δθ on the left
+                let d_angle = sigma * d_roll;
+                let mut best: Option<(T, usize)> = None;
+                for k in 0..K {
+                    let fx = &cur[j * K + k].fixed;
+                    if !cur[j * K + k].present {
+                        continue;
+                    }
+                    let dy_rail = d_angle
+                        * (fx[SlotField::RailShift as usize]
+                            + d_angle * fx[SlotField::RailShift2 as usize]);
+                    let y = fx[SlotField::YRefRail as usize] + sigma * dy_rail;
+                    let d = math::abs(wp.frame.y_ref_rail - y);
+                    if d <= math::c(MATCH_MM) && best.is_none_or(|(b, _)| d < b) {
+                        best = Some((d, k));
+                    }
+                }
+                if let Some((_, k)) = best {
+                    fixed[j][NODE_FIXED + 2 * q] = wp.frame.angle - sigma * pose.roll;
+                    fixed[j][NODE_FIXED + 2 * q + 1] = T::from_usize(k);
+                }
+            }
+        }
+    }
+}
+
+/// Shift (mm) within which [`calibrate_roll`] looks for the node whose wheel angle a roll
+/// probe's contact has: beyond the largest equivalent shift at [`ROLL_FIT`] (≈ 700 mm/rad · 5
+/// mrad on S1002/UIC60).
+const CALIBRATE_WINDOW: f64 = 4.0;
+
+/// Calibrates the roll mapping's c₁, c₂ by the solver (module docs, "Roll"): a row's roll probe
+/// solved the pose the geometric c₁, c₂ send to node i (dy_i − c₁Δθ − c₂Δθ², roll θ_i ± h);
+/// the node whose wheel angle (δ ∓ θ, in the probe's slot, linear between nodes) equals the
+/// probe contact's is where that pose really belongs, d*; the equivalent shift at ±h is then
+/// e = d* − (dy_i − c₁Δθ − c₂Δθ²) with Δθ = θ_i ± h − θ(d*), and c₁, c₂ are refitted exactly
+/// through both. Where either probe failed or no node within [`CALIBRATE_WINDOW`] matches its
+/// wheel angle (a contact on a part of the wheel that touches at no node of this roll), the
+/// geometric coefficients stay. `body` is the node array and payload, `probe` the rows' probes.
+#[allow(clippy::too_many_arguments)]
+fn calibrate_roll<T: Real>(
+    body: &mut [u8],
+    probe: &[u8],
+    ny: usize,
+    nl: usize,
+    node_bytes: usize,
+    st: usize,
+    side: Side,
+) {
+    let (nodes, payload) = body.split_at_mut(ny * T::BYTES);
+    let dy = |i: usize| T::read_le(&nodes[i * T::BYTES..(i + 1) * T::BYTES]);
+    let slot_bytes = (SLOT_FIXED + 3 * st) * T::BYTES;
+    let node_v = |p: &[u8], i: usize, j: usize, f: NodeField| {
+        let o = (i * nl + j) * node_bytes + f as usize * T::BYTES;
+        T::read_le(&p[o..o + T::BYTES])
+    };
+    let slot_v = |p: &[u8], i: usize, j: usize, k: usize, f: SlotField| {
+        let o = (i * nl + j) * node_bytes + NODE_FIXED * T::BYTES + k * slot_bytes;
+        let o = o + f as usize * T::BYTES;
+        T::read_le(&p[o..o + T::BYTES])
+    };
+    let probe_v = |i: usize, j: usize, m: usize| {
+        let o = ((i * nl + j) * ROLL_PROBE + m) * T::BYTES;
+        T::read_le(&probe[o..o + T::BYTES])
+    };
+    let sigma = side.sign::<T>();
+    let h = math::c::<T>(ROLL_FIT);
+    let window = math::c::<T>(CALIBRATE_WINDOW);
+    // the wheel angle of slot k at node i (None where the slot has no patch)
+    let wheel_angle = |p: &[u8], i: usize, j: usize, k: usize| {
+        (slot_v(p, i, j, k, SlotField::Share) > T::ZERO).then(|| {
+            slot_v(p, i, j, k, SlotField::Angle) - sigma * node_v(p, i, j, NodeField::Roll)
+        })
+    };
+    for j in 0..nl {
+        for i in 0..ny {
+            let c1 = node_v(payload, i, j, NodeField::ShiftPerRoll);
+            let c2 = node_v(payload, i, j, NodeField::ShiftPerRoll2);
+            let th = node_v(payload, i, j, NodeField::Roll);
+            let mut fit: [Option<(T, T)>; 2] = [None, None];
+            for (q, d_roll) in [h, -h].into_iter().enumerate() {
+                let k = probe_v(i, j, 2 * q + 1);
+                if !(k >= T::ZERO) {
+                    continue;
+                }
+                let k = k.to_f64() as usize;
+                let alpha = probe_v(i, j, 2 * q);
+                let pose_dy = dy(i) - d_roll * (c1 + c2 * d_roll);
+                // the matching node interval nearest node i
+                let mut best: Option<(T, T)> = None;
+                for i0 in 0..ny - 1 {
+                    let (d0, d1) = (dy(i0), dy(i0 + 1));
+                    if d1 < dy(i) - window || d0 > dy(i) + window {
+                        continue;
+                    }
+                    let (Some(a0), Some(a1)) = (
+                        wheel_angle(payload, i0, j, k),
+                        wheel_angle(payload, i0 + 1, j, k),
+                    ) else {
+                        continue;
+                    };
+                    let (f0, f1) = (a0 - alpha, a1 - alpha);
+                    if (f0 <= T::ZERO) == (f1 <= T::ZERO) && f0 != T::ZERO {
+                        continue;
+                    }
+                    let u = if f1 != f0 { f0 / (f0 - f1) } else { T::ZERO };
+                    let d = d0 + (d1 - d0) * u;
+                    let roll_d = node_v(payload, i0, j, NodeField::Roll) * (T::ONE - u)
+                        + node_v(payload, i0 + 1, j, NodeField::Roll) * u;
+                    let dist = math::abs(d - dy(i));
+                    if dist <= window && best.is_none_or(|(b, _)| dist < math::abs(b - dy(i))) {
+                        best = Some((d, roll_d));
+                    }
+                }
+                if let Some((d, roll_d)) = best {
+                    fit[q] = Some((th + d_roll - roll_d, d - pose_dy));
+                }
+            }
+            if let [Some((xp, ep)), Some((xm, em))] = fit {
+                // e = c₁ x + c₂ x² through (x₊, e₊) and (x₋, e₋)
+                if xp > T::ZERO && xm < T::ZERO {
+                    let c2 = (ep / xp - em / xm) / (xp - xm);
+                    let c1 = ep / xp - c2 * xp;
+                    let o = |f: NodeField| (i * nl + j) * node_bytes + f as usize * T::BYTES;
+                    let o1 = o(NodeField::FrameShiftPerRoll);
+                    c1.write_le(&mut payload[o1..o1 + T::BYTES]);
+                    let o2 = o(NodeField::FrameShiftPerRoll2);
+                    c2.write_le(&mut payload[o2..o2 + T::BYTES]);
+                }
+            }
+        }
+    }
 }
 
 /// Roll offset (rad) up to which the roll mapping's h(d) = d − dy − c₁Δθ − c₂Δθ² is kept
@@ -1300,6 +1576,8 @@ fn limit_roll_slopes<T: Real>(body: &mut [u8], ny: usize, nl: usize, node_bytes:
     for (field, lip) in [
         (NodeField::ShiftPerRoll, k / m),
         (NodeField::ShiftPerRoll2, k / (m * m)),
+        (NodeField::FrameShiftPerRoll, k / m),
+        (NodeField::FrameShiftPerRoll2, k / (m * m)),
     ] {
         for j in 0..nl {
             let o = |i: usize| (i * nl + j) * node_bytes + field as usize * T::BYTES;

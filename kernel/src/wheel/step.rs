@@ -3,10 +3,12 @@
 //!
 //! Per call, top-down:
 //! 1. **Cell of the table**: the shift interval by a binary search of a fixed [`DY_HALVINGS`]
-//!    halvings among the table's (not necessarily evenly spaced) shift nodes, once per call, for
-//!    the root of the roll mapping h(d) = d − dy − c₁Δθ − c₂Δθ², Δθ = roll − node roll (the node
-//!    pose with the same wheel point in contact, [`crate::table`] "Roll"; at the table's roll
-//!    d = dy); the load then locates the cell (linear in dy, linear in ln F, the frame quadratic in
+//!    halvings among the table's (not necessarily evenly spaced) shift nodes, twice per call, for
+//!    the roots of the roll mappings h(d) = d − dy − c₁Δθ − c₂Δθ², Δθ = roll − node roll
+//!    ([`crate::table`] "Roll"; at the table's roll d = dy): the patch's shape (load share, pmax,
+//!    area, strips: the node pose with the same gap) and its frame (contact angle, rolling radius,
+//!    reference point, rail point, centre height: the node with the rolled contact's wheel point);
+//!    the load then locates the cells (linear in dy, linear in ln F, the frame quadratic in
 //!    ln F); a shift or load outside the table is `OutOfRange`, never extrapolated.
 //! 2. **Vertical balance** (fixed [`BALANCE_STEPS`] steps): the table's load coordinate F (the
 //!    load at which Σ_k N_k cos δ_k = F) solves F · Σ_k s_k(F)(cos δ_k(F) + r_k e_k(F)) = F_z,
@@ -138,13 +140,15 @@ struct Shift<T> {
 /// [`DY_HALVINGS`] halvings (⌈log₂⌉ of the largest node count: every table and shift takes the
 /// same count). Roll mapping (module docs): the table point (d, θ(d)) equivalent to the pose
 /// (dy, θ) is the root of h(d) = d − dy − c₁(d) Δθ − c₂(d) Δθ², Δθ = θ − θ(d), c₁, c₂ the
-/// node's equivalent shift per roll (at the load nodes around `fz`, linear in ln F), θ(d) its
-/// roll; h is searched at the nodes, linear between them. A pose at the table's roll is located
-/// at its dy. Both dy and the root must lie inside the table.
+/// node's equivalent shift per roll, the node fields (c₁, c₂) given: the shape's or the
+/// frame's (at the load nodes around `fz`, linear in ln F), θ(d) its roll; h is searched at the
+/// nodes, linear between them. A pose at the table's roll is located at its dy. Both dy and the
+/// root must lie inside the table.
 fn shift<T: Real>(
     t: &ContactTable<'_, T>,
     pose: &WheelsetPose<T>,
     fz: T,
+    (c1_v, c2_v): (NodeField, NodeField),
 ) -> Result<Shift<T>, Error> {
     let h = &t.header;
     let n = h.n_dy;
@@ -158,10 +162,7 @@ fn shift<T: Real>(
     let roll_v = NodeField::Roll as usize;
     let at_f = |i: usize, v: usize| t.value(i, j, v) * (T::ONE - fj) + t.value(i, j + 1, v) * fj;
     let hd = |i: usize| {
-        let (c1, c2) = (
-            at_f(i, NodeField::ShiftPerRoll as usize),
-            at_f(i, NodeField::ShiftPerRoll2 as usize),
-        );
+        let (c1, c2) = (at_f(i, c1_v as usize), at_f(i, c2_v as usize));
         let d = pose.roll - t.value(i, 0, roll_v);
         t.dy_node(i) - pose.dy - d * (c1 + c2 * d)
     };
@@ -589,8 +590,21 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
     let psi2 = psi * psi;
     // 1. the shift interval (the same for every round and balance step) and the roll relative
     // to the table's there: the wheel turns by it about the axle, the contact normal with it
-    let sh = shift(table, &pose, fz)?;
-    let d_roll = pose.roll - sh.roll;
+    // (the patch's shape, "sh", at the root of the gap's mapping; its frame, "shf", at the
+    // root of the frame's: the node with the rolled pose's wheel point)
+    let sh = shift(
+        table,
+        &pose,
+        fz,
+        (NodeField::ShiftPerRoll, NodeField::ShiftPerRoll2),
+    )?;
+    let shf = shift(
+        table,
+        &pose,
+        fz,
+        (NodeField::FrameShiftPerRoll, NodeField::FrameShiftPerRoll2),
+    )?;
+    let d_roll = pose.roll - shf.roll;
     let (sin_r, cos_r) = math::sin_cos_small(d_roll);
     // the contact angle turns with the wheel: + left, − right (normal (∓ sin δ, cos δ))
     let (d_angle, n_sign) = match side {
@@ -603,12 +617,13 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         let mut f = math::clamp(fz, f_lo, f_hi);
         for _ in 0..BALANCE_STEPS {
             let c = cell(table, &sh, f)?;
+            let cf = cell(table, &shf, f)?;
             let mut sum = T::ZERO;
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
                 let share = at_yawed(table, &c, o, SlotField::Share, SlotField::YawShare, psi2);
                 // (a slot without a patch here adds exactly 0)
-                let ang = angle_yawed(table, &c, o, psi2) + d_angle;
+                let ang = angle_yawed(table, &cf, o, psi2) + d_angle;
                 sum += share * vertical(side, math::sin_cos_small(ang), *r);
             }
             if !(sum > T::ZERO) {
@@ -620,26 +635,29 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             }
         }
         // 3.–5. slots at F
+        // the patch's shape (load share, pmax, area, strips) at the gap's root `c`, its frame
+        // (angle, rolling radius, reference point, rail point) at the frame's root `cf`
         let c = cell(table, &sh, f)?;
+        let cf = cell(table, &shf, f)?;
         let f13 = math::cbrt(f);
         let f23 = f13 * f13;
-        let cz = at_frame(table, &c, NodeField::CentreHeight as usize);
+        let cz = at_frame(table, &cf, NodeField::CentreHeight as usize);
         let dv = at_frame(table, &c, NodeField::Approach as usize) * f23;
         out.vertical_approach = dv;
         let mut vload = T::ZERO;
         for (k, slot) in out.slots.iter_mut().enumerate().take(ks) {
             let o = table.slot_offset(k);
             let fld = |q: SlotField| at(table, &c, o + q as usize);
-            let frm = |q: SlotField| at_frame(table, &c, o + q as usize);
+            let frm = |q: SlotField| at_frame(table, &cf, o + q as usize);
             let yawed = |v: SlotField, k: SlotField| at_yawed(table, &c, o, v, k, psi2);
             let load = yawed(SlotField::Share, SlotField::YawShare) * f;
-            let angle_t = angle_yawed(table, &c, o, psi2);
+            let angle_t = angle_yawed(table, &cf, o, psi2);
             let angle = angle_t + d_angle;
             // 3a. Roll relative to the table's (module docs): the same wheel point, the rail
             // point turned about the rail's centre of curvature, the wheel's arm to it about the
             // axle
             let (y_t, z_t) = (frm(SlotField::YRefTrack), frm(SlotField::ZRefTrack));
-            let (ay, az) = (y_t - sh.dy, z_t - cz);
+            let (ay, az) = (y_t - shf.dy, z_t - cz);
             let (ay, az) = (ay * cos_r - az * sin_r, ay * sin_r + az * cos_r);
             let (s_t, c_t) = math::sin_cos_small(angle_t);
             // sin, cos of angle = angle_t + d_angle, d_angle = −n_sign · d_roll
@@ -649,8 +667,9 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
             );
             // the rail point at the turned angle: lateral by the table's fit, vertical along the
             // surface (slope −n_sign tan of the mean angle)
-            let dy_rail =
-                d_angle * (fld(SlotField::RailShift) + d_angle * fld(SlotField::RailShift2));
+            let rail_shift = |q: SlotField| at(table, &cf, o + q as usize);
+            let dy_rail = d_angle
+                * (rail_shift(SlotField::RailShift) + d_angle * rail_shift(SlotField::RailShift2));
             let z_ref = z_t - dy_rail * n_sign * (s_t + s_a) / (c_t + c_a);
             let cz_k = z_ref - az;
             *slot = SlotResult {
@@ -697,7 +716,7 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
                     rolling_radius: slot.rolling_radius,
                     weight: T::ZERO,
                     approach_vertical: dv,
-                    approach: frm(SlotField::Approach) * f23,
+                    approach: at_frame(table, &c, o + SlotField::Approach as usize) * f23,
                     overlap_y: [T::ZERO; 2],
                     overlap_s: [T::ZERO; 2],
                     components: 1,
