@@ -311,7 +311,7 @@ pub struct TableArgs {
     #[arg(long = "refine-tol", default_value_t = 0.01)]
     pub refine_tol: f64,
     /// Most shift nodes after refinement (the coarse nodes are always kept).
-    #[arg(long = "max-dy-nodes", default_value_t = 180)]
+    #[arg(long = "max-dy-nodes", default_value_t = 176)]
     pub max_dy_nodes: usize,
     /// Lowest vertical load of the table, N.
     #[arg(long = "fz-min", default_value_t = 15_000.0)]

@@ -3,7 +3,7 @@
 //! The table is the one `wrc table --back-to-back 1353 --equilibrium-roll --out table.bin`
 //! writes: built-in S1002 wheel / UIC60 rail, right wheel, f64, shift −11.8 … 11.8 mm (the
 //! default: both flange contacts, found from the profiles, and 2 mm), coarse nodes every 0.5 mm
-//! refined to 1 % (at most 180 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, up to 3
+//! refined to 1 % (at most 176 shift nodes), F_z 15 … 260 kN in 5 log-spaced loads, up to 3
 //! slots (1 used) × 16 strips, steel
 //! (E 205 900 MPa, ν 0.28), gauge 1435 mm, gauge depth 14 mm, no cant, r0 460 mm — the same
 //! kernel call with the same arguments as `cli/src/realtime.rs`.
@@ -57,7 +57,7 @@ pub fn default_table() -> Result<(Vec<u8>, BuildReport), String> {
         equilibrium_roll: true,
         // `wrc table`'s defaults (--refine-tol, --max-dy-nodes)
         refine_tol: 0.01,
-        max_dy_nodes: 180,
+        max_dy_nodes: 176,
     };
     let setup = TrackSetup {
         gauge: 1435.0,

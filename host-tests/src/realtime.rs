@@ -23,7 +23,7 @@ pub const REFINE_TOL: f64 = 0.01;
 pub const DY_STEP: f64 = 0.5;
 /// Most shift nodes of the examples' grid ([`TableSpec::max_dy_nodes`]): the f32 table of one
 /// slot × 16 strips × 5 loads stays within 256 KiB.
-pub const MAX_DY_NODES: usize = 180;
+pub const MAX_DY_NODES: usize = 176;
 /// Nominal rolling radius of the cases, mm.
 pub const R0: f64 = 460.0;
 /// Forward speed of the cases, mm/s (100 km/h).

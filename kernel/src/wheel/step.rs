@@ -147,18 +147,13 @@ struct Shift<T> {
 fn shift<T: Real>(
     t: &ContactTable<'_, T>,
     pose: &WheelsetPose<T>,
-    fz: T,
+    lz: &LoadCoord<T>,
     (c1_v, c2_v): (NodeField, NodeField),
 ) -> Result<Shift<T>, Error> {
     let h = &t.header;
     let n = h.n_dy;
     // the load nodes around fz (clamped to the table)
-    let (f0, f1) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
-    let uj =
-        math::ln(math::clamp(fz, f0, f1) / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
-    let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
-    let fj = uj - j;
-    let j = j.to_f64() as usize;
+    let (j, fj) = (lz.j, lz.fj);
     let roll_v = NodeField::Roll as usize;
     let at_f = |i: usize, v: usize| t.value(i, j, v) * (T::ONE - fj) + t.value(i, j + 1, v) * fj;
     let hd = |i: usize| {
@@ -209,13 +204,33 @@ struct Cell<T> {
     q: [T; 6],
 }
 
-fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>, Error> {
+/// Where a load F lies on the table's load axis: nodes `j`, `j` + 1 and the weight `fj` of
+/// `j` + 1 (linear in ln F), and the frame's quadratic through `j2` … `j2` + 2 (weights `l`).
+/// The shape's and the frame's cells at one F share it (one logarithm).
+#[derive(Clone, Copy)]
+struct LoadCoord<T> {
+    j: usize,
+    fj: T,
+    j2: usize,
+    l: [T; 3],
+}
+
+/// The [`LoadCoord`] of `f`: `OutOfRange` outside the table's loads unless `clamped`, which
+/// takes the nearest end instead (the roll mappings' coefficients at F_z).
+fn load_coord<T: Real>(
+    t: &ContactTable<'_, T>,
+    f: T,
+    clamped: bool,
+) -> Result<LoadCoord<T>, Error> {
     let h = &t.header;
     let (f0, f1) = (T::from_f64(h.f_min), T::from_f64(h.f_max));
-    if !(f >= f0 && f <= f1) {
+    let f = if clamped {
+        math::clamp(f, f0, f1)
+    } else if !(f >= f0 && f <= f1) {
         return Err(Error::OutOfRange("load outside the contact table"));
-    }
-    let fi = s.f;
+    } else {
+        f
+    };
     let uj = math::ln(f / f0) / math::ln(f1 / f0) * T::from_usize(h.n_load - 1);
     let j = math::clamp(math::floor(uj), T::ZERO, T::from_usize(h.n_load - 2));
     let fj = uj - j;
@@ -236,12 +251,23 @@ fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>,
     } else {
         (0, [T::ONE - fj, fj, T::ZERO])
     };
-    let g = T::ONE - fi;
-    Ok(Cell {
-        i: s.i,
+    Ok(LoadCoord {
         j: j.to_f64() as usize,
-        w: [g * (T::ONE - fj), g * fj, fi * (T::ONE - fj), fi * fj],
+        fj,
         j2,
+        l,
+    })
+}
+
+/// The cell of shift interval `s` at the load coordinate `lc`.
+fn cell<T: Real>(s: &Shift<T>, lc: &LoadCoord<T>) -> Cell<T> {
+    let (fi, fj, l) = (s.f, lc.fj, lc.l);
+    let g = T::ONE - fi;
+    Cell {
+        i: s.i,
+        j: lc.j,
+        w: [g * (T::ONE - fj), g * fj, fi * (T::ONE - fj), fi * fj],
+        j2: lc.j2,
         q: [
             g * l[0],
             g * l[1],
@@ -250,7 +276,7 @@ fn cell<T: Real>(t: &ContactTable<'_, T>, s: &Shift<T>, f: T) -> Result<Cell<T>,
             fi * l[1],
             fi * l[2],
         ],
-    })
+    }
 }
 
 #[inline]
@@ -592,16 +618,17 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
     // to the table's there: the wheel turns by it about the axle, the contact normal with it
     // (the patch's shape, "sh", at the root of the gap's mapping; its frame, "shf", at the
     // root of the frame's: the node with the rolled pose's wheel point)
+    let lz = load_coord(table, fz, true)?;
     let sh = shift(
         table,
         &pose,
-        fz,
+        &lz,
         (NodeField::ShiftPerRoll, NodeField::ShiftPerRoll2),
     )?;
     let shf = shift(
         table,
         &pose,
-        fz,
+        &lz,
         (NodeField::FrameShiftPerRoll, NodeField::FrameShiftPerRoll2),
     )?;
     let d_roll = pose.roll - shf.roll;
@@ -616,8 +643,8 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         // 2. vertical balance
         let mut f = math::clamp(fz, f_lo, f_hi);
         for _ in 0..BALANCE_STEPS {
-            let c = cell(table, &sh, f)?;
-            let cf = cell(table, &shf, f)?;
+            let lc = load_coord(table, f, false)?;
+            let (c, cf) = (cell(&sh, &lc), cell(&shf, &lc));
             let mut sum = T::ZERO;
             for (k, r) in ratio.iter().enumerate().take(ks) {
                 let o = table.slot_offset(k);
@@ -637,8 +664,8 @@ fn evaluate<T: Real, const K: usize, const ST: usize, F: SlotFields<T, ST>>(
         // 3.–5. slots at F
         // the patch's shape (load share, pmax, area, strips) at the gap's root `c`, its frame
         // (angle, rolling radius, reference point, rail point) at the frame's root `cf`
-        let c = cell(table, &sh, f)?;
-        let cf = cell(table, &shf, f)?;
+        let lc = load_coord(table, f, false)?;
+        let (c, cf) = (cell(&sh, &lc), cell(&shf, &lc));
         let f13 = math::cbrt(f);
         let f23 = f13 * f13;
         let cz = at_frame(table, &cf, NodeField::CentreHeight as usize);
