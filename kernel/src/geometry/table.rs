@@ -65,17 +65,18 @@
 //! an arc about its centre leaves it unchanged), so it is the patch's **shape** (load share,
 //! pmax, area, strips). For a wide, conformal patch across the rail's arcs the rolled contact's
 //! weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360 mm, left wheel, dy
-//! 4.1 mm, 50 kN, roll −5 mrad from equilibrium) the mapped rolling radius was 0.061 mm and the
-//! contact angle 5.6 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ. The
+//! 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling radius was 0.070 mm and the
+//! contact angle 5.2 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ. The
 //! patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
 //! a second mapping, [`NodeField::FrameShiftPerRoll`], calibrated by the solver: each row is
 //! solved again at ±[`ROLL_FIT`] at the pose the first mapping sends to the node (the roll
 //! probe), the node whose wheel angle δ ∓ θ equals the probe contact's is where that pose
 //! belongs, and c₁ᶠ, c₂ᶠ go exactly through both (`calibrate_roll`; the first mapping's where the
 //! probe's contact is on a part of the wheel that touches at no node, e.g. across a contact
-//! jump). On the example the frame's rolling radius is then 0.011 mm off, the angle 0.1 mrad;
-//! over the issue-14 sweep the tread force's P95 went from 2.5 to 1.3 % of μF_z. The step finds
-//! both roots.
+//! jump). On the example at roll −4 mrad the frame's rolling radius is then 0.006 mm off (was
+//! 0.070), the angle 0.9 mrad (was 5.2); at −5 mrad, the end of the fitted range, still 0.065 mm
+//! and 3.7 mrad. Over the issue-14 sweep the tread force's P95 went from 2.5 to 1.3 % of μF_z.
+//! The step finds both roots.
 //!
 //! # Yaw
 //! The table is built at yaw 0. A yawed wheel touches the rail with the lowest points of its rows,
