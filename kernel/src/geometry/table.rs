@@ -1286,17 +1286,11 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                         continue;
                     }
                     let y = slot.fixed[SlotField::YRefRail as usize];
-                    let mut best: Option<(T, usize)> = None;
-                    for (q, wp) in res.patches.iter().enumerate() {
-                        let d = math::abs(wp.frame.y_ref_rail - y);
-                        if wp.load > T::ZERO
-                            && d <= math::c(MATCH_MM)
-                            && best.is_none_or(|(b, _)| d < b)
-                        {
-                            best = Some((d, q));
-                        }
-                    }
-                    let Some((_, q)) = best else {
+                    let loaded = res
+                        .patches
+                        .iter()
+                        .map(|wp| (wp.load > T::ZERO).then_some(wp.frame.y_ref_rail));
+                    let Some(q) = nearest_within_match(loaded, y) else {
                         continue;
                     };
                     let wp = &res.patches[q];
@@ -1422,28 +1416,40 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 let wp = &res.patches[p];
                 // the contact angle turns by −Δθ on the right wheel, +Δθ on the left
                 let d_angle = sigma * d_roll;
-                let mut best: Option<(T, usize)> = None;
-                for k in 0..K {
-                    let fx = &cur[j * K + k].fixed;
-                    if !cur[j * K + k].present {
-                        continue;
-                    }
+                // the slots' reference points turned with the wheel (as the step turns them)
+                let mapped = cur[j * K..(j + 1) * K].iter().map(|sl| {
+                    let fx = &sl.fixed;
                     let dy_rail = d_angle
                         * (fx[SlotField::RailShift as usize]
                             + d_angle * fx[SlotField::RailShift2 as usize]);
-                    let y = fx[SlotField::YRefRail as usize] + sigma * dy_rail;
-                    let d = math::abs(wp.frame.y_ref_rail - y);
-                    if d <= math::c(MATCH_MM) && best.is_none_or(|(b, _)| d < b) {
-                        best = Some((d, k));
-                    }
-                }
-                if let Some((_, k)) = best {
+                    sl.present
+                        .then_some(fx[SlotField::YRefRail as usize] + sigma * dy_rail)
+                });
+                let best = nearest_within_match(mapped, wp.frame.y_ref_rail);
+                if let Some(k) = best {
                     fixed[j][NODE_FIXED + 2 * q] = wp.frame.angle - sigma * pose.roll;
                     fixed[j][NODE_FIXED + 2 * q + 1] = T::from_usize(k);
                 }
             }
         }
     }
+}
+
+/// The index of the candidate reference point (rail-file y, mm; `None`: no candidate) nearest
+/// `y` within [`MATCH_MM`], the first of equals: how the builder matches a re-solved patch to a
+/// slot (yaw's coefficients, the roll probes).
+fn nearest_within_match<T: Real>(ys: impl Iterator<Item = Option<T>>, y: T) -> Option<usize> {
+    let mut best: Option<(T, usize)> = None;
+    for (i, yc) in ys.enumerate() {
+        let Some(yc) = yc else {
+            continue;
+        };
+        let d = math::abs(yc - y);
+        if d <= math::c(MATCH_MM) && best.is_none_or(|(b, _)| d < b) {
+            best = Some((d, i));
+        }
+    }
+    best.map(|(_, i)| i)
 }
 
 /// Shift (mm) within which [`calibrate_roll`] looks for the node whose wheel angle a roll
