@@ -389,8 +389,10 @@ fn issue14_sweep_both_wheels_both_back_to_backs() {
         tt.1 <= 0.015 && tt.2 <= 0.06,
         "tread force, table part {tt:?}"
     );
-    assert!(tp.2 <= 0.16, "tread pmax {tp:?}");
-    assert!(ta.1 <= 0.05 && ta.2 <= 0.15, "tread area {ta:?}");
+    // pmax and area: the shape's roll mapping calibrated on the tread by the solver (table.rs,
+    // "Roll"): area P95 3.2 %, max 10.1 %, pmax max 12.3 % (geometric mapping: 4.1, 11.6, 14.6 %)
+    assert!(tp.2 <= 0.13, "tread pmax {tp:?}");
+    assert!(ta.1 <= 0.035 && ta.2 <= 0.11, "tread area {ta:?}");
     // the flange root and flange: the table's part of the force (the closed form's own is the
     // strip model's, fastrip.rs) and pmax, area
     // (the table's part at the flange root, P95 4.6 %, was 3.2 % while the closed form lagged the
