@@ -67,8 +67,9 @@
 //! by the solver as it does the frame's (below): the rolled probe's area is met at the node
 //! nearest where the slot's area equals it, provided pmax agrees better there too and on the way
 //! (`calibrate_roll`). Over the issue-14 sweep the tread's area P95 went from 4.1 to 3.2 % and
-//! its pmax maximum from 14.6 to 12.3 %. For a wide, conformal patch across the rail's arcs the rolled contact's
-//! weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360 mm, left wheel, dy
+//! its pmax maximum from 14.6 to 12.3 %. For a wide, conformal patch across the rail's arcs the
+//! rolled contact's weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360
+//! mm, left wheel, dy
 //! 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling radius was 0.070 mm and the
 //! contact angle 5.2 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ. The
 //! patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
@@ -1396,6 +1397,7 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 continue;
             }
             let f = spec.load_node(j);
+            let f13 = math::cbrt(f);
             let (c1, c2) = (
                 fixed[j][NodeField::ShiftPerRoll as usize],
                 fixed[j][NodeField::ShiftPerRoll2 as usize],
@@ -1438,7 +1440,6 @@ impl<'r, T: Real, const N: usize> RowSolve<'r, T, N> {
                 });
                 let best = nearest_within_match(mapped, wp.frame.y_ref_rail);
                 if let Some(k) = best {
-                    let f13 = math::cbrt(f);
                     let pr = &mut fixed[j][NODE_FIXED + 4 * q..NODE_FIXED + 4 * q + 4];
                     pr[0] = wp.frame.angle - sigma * pose.roll;
                     pr[1] = T::from_usize(k);
@@ -1570,44 +1571,47 @@ fn calibrate_roll<T: Real>(
                 if let Some((d, roll_d, ..)) = crossing(payload, i, j, alpha, &angle) {
                     fit[0][q] = Some((th + d_roll - roll_d, d - pose_dy));
                 }
-                let (area, pmax) = (probe_v(i, j, 4 * q + 2), probe_v(i, j, 4 * q + 3));
-                let ln_of = |p: &[u8], i0: usize, f: SlotField| {
-                    let a = slot_v(p, i0, j, k, f);
-                    (a > T::ZERO).then(|| math::ln(a))
-                };
-                let ln_area = |p: &[u8], i0: usize| ln_of(p, i0, SlotField::Area);
-                let (Some(a_i), Some(p_i)) = (
-                    ln_of(payload, i, SlotField::Area),
-                    ln_of(payload, i, SlotField::Pmax),
-                ) else {
-                    continue;
-                };
+                // the shape (tread only): the area's crossing, taken only where pmax agrees
+                // better too — the misfit |Δ ln area| + |Δ ln pmax| below the gap mapping's at
+                // node i — there and at every node on the way (a pmax peak on the way would be
+                // met at other rolls)
                 let tread = math::abs(alpha) < math::c(SHAPE_CALIBRATE_ANGLE)
                     && math::abs(slot_v(payload, i, j, k, SlotField::Angle))
                         < math::c(SHAPE_CALIBRATE_ANGLE);
-                if tread && area > T::ZERO && pmax > T::ZERO {
-                    let (la, lp) = (math::ln(area), math::ln(pmax));
-                    if let Some((d, roll_d, i0, u)) = crossing(payload, i, j, la, &ln_area) {
-                        // only where pmax agrees better too: the shape's misfit |Δ ln area| +
-                        // |Δ ln pmax| below the gap mapping's
-                        let pm = |i: usize| ln_of(payload, i, SlotField::Pmax);
-                        if let (Some(p0), Some(p1)) = (pm(i0), pm(i0 + 1)) {
-                            let p_d = p0 + (p1 - p0) * u;
-                            let gap = math::abs(a_i - la) + math::abs(p_i - lp);
-                            // and no node between node i and the crossing worse than the gap
-                            // mapping (a pmax peak on the way would be met at other rolls)
-                            let (lo, hi) = if i0 < i { (i0 + 1, i) } else { (i + 1, i0) };
-                            let path = (lo..=hi).all(|m| {
-                                m == i
-                                    || matches!((ln_of(payload, m, SlotField::Area), pm(m)),
-                                        (Some(a), Some(p)) if math::abs(a - la) + math::abs(p - lp) <= gap)
-                            });
-                            if path && math::abs(p_d - lp) < gap {
-                                fit[1][q] = Some((th + d_roll - roll_d, d - pose_dy));
-                            }
-                        }
+                let (area, pmax) = (probe_v(i, j, 4 * q + 2), probe_v(i, j, 4 * q + 3));
+                let ln_of = |m: usize, f: SlotField| {
+                    let a = slot_v(payload, m, j, k, f);
+                    (a > T::ZERO).then(|| math::ln(a))
+                };
+                let misfit = |m: usize, la: T, lp: T| {
+                    Some(
+                        math::abs(ln_of(m, SlotField::Area)? - la)
+                            + math::abs(ln_of(m, SlotField::Pmax)? - lp),
+                    )
+                };
+                fit[1][q] = 'shape: {
+                    if !(tread && area > T::ZERO && pmax > T::ZERO) {
+                        break 'shape None;
                     }
-                }
+                    let (la, lp) = (math::ln(area), math::ln(pmax));
+                    let Some(gap) = misfit(i, la, lp) else {
+                        break 'shape None;
+                    };
+                    let ln_area = |_: &[u8], m: usize| ln_of(m, SlotField::Area);
+                    let Some((d, roll_d, i0, u)) = crossing(payload, i, j, la, &ln_area) else {
+                        break 'shape None;
+                    };
+                    let (Some(p0), Some(p1)) =
+                        (ln_of(i0, SlotField::Pmax), ln_of(i0 + 1, SlotField::Pmax))
+                    else {
+                        break 'shape None;
+                    };
+                    let (lo, hi) = if i0 < i { (i0 + 1, i) } else { (i + 1, i0) };
+                    let path =
+                        (lo..=hi).all(|m| m == i || misfit(m, la, lp).is_some_and(|e| e <= gap));
+                    (path && math::abs(p0 + (p1 - p0) * u - lp) < gap)
+                        .then_some((th + d_roll - roll_d, d - pose_dy))
+                };
             }
             let fields = [
                 (NodeField::FrameShiftPerRoll, NodeField::FrameShiftPerRoll2),
