@@ -68,11 +68,10 @@
 //! nearest where the slot's area equals it, provided pmax agrees better there too and on the way
 //! (`calibrate_roll`). Over the issue-14 sweep the tread's area P95 went from 4.1 to 3.2 % and
 //! its pmax maximum from 14.6 to 12.3 %. For a wide, conformal patch across the rail's arcs the
-//! rolled contact's weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360
-//! mm, left wheel, dy
-//! 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling radius was 0.070 mm and the
-//! contact angle 5.2 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ. The
-//! patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
+//! rolled contact's weighted reference point sits elsewhere on the wheel: on S1002/UIC60
+//! (1360 mm, left wheel, dy 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling
+//! radius was 0.070 mm and the contact angle 5.2 mrad off, enough for 8 % of μF_z in the
+//! longitudinal force at low μ. The patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
 //! a second mapping, [`NodeField::FrameShiftPerRoll`], calibrated by the solver: each row is
 //! solved again at ±[`ROLL_FIT`] at the pose the first mapping sends to the node (the roll
 //! probe), the node whose wheel angle δ ∓ θ equals the probe contact's is where that pose
