@@ -62,25 +62,24 @@
 //! along the rail by m₁, m₂.
 //!
 //! That mapping keeps the gap exactly while the rail under the patch is one circular arc (turning
-//! an arc about its centre leaves it unchanged), so it is the patch's **shape** (load share,
-//! pmax, area, strips). On the tread (contact angles below 0.25 rad) the builder calibrates it
-//! by the solver as it does the frame's (below): the rolled probe's area is met at the node
-//! nearest where the slot's area equals it, provided pmax agrees better there too and on the way
-//! (`calibrate_roll`). Over the issue-14 sweep the tread's area P95 went from 4.1 to 3.2 % and
-//! its pmax maximum from 14.6 to 12.3 %. For a wide, conformal patch across the rail's arcs the
-//! rolled contact's weighted reference point sits elsewhere on the wheel: on S1002/UIC60
-//! (1360 mm, left wheel, dy 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling
-//! radius was 0.070 mm and the contact angle 5.2 mrad off, enough for 8 % of μF_z in the
-//! longitudinal force at low μ. The patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
-//! a second mapping, [`NodeField::FrameShiftPerRoll`], calibrated by the solver: each row is
-//! solved again at ±[`ROLL_FIT`] at the pose the first mapping sends to the node (the roll
-//! probe), the node whose wheel angle δ ∓ θ equals the probe contact's is where that pose
-//! belongs, and c₁ᶠ, c₂ᶠ go exactly through both (`calibrate_roll`; the first mapping's where the
-//! probe's contact is on a part of the wheel that touches at no node, e.g. across a contact
-//! jump). On the example at roll −4 mrad the frame's rolling radius is then 0.006 mm off (was
-//! 0.070), the angle 0.9 mrad (was 5.2); at −5 mrad, the end of the fitted range, still 0.065 mm
-//! and 3.7 mrad. Over the issue-14 sweep the tread force's P95 went from 2.5 to 1.3 % of μF_z.
-//! The step finds both roots.
+//! an arc about its centre leaves it unchanged), so it is the patch's **shape** (load share, pmax,
+//! area, strips). On the tread (contact angles below 0.25 rad) the builder calibrates it by the
+//! solver as it does the frame's (below): the rolled probe's area is met at the node nearest where
+//! the slot's area equals it, provided pmax agrees better there too and on the way
+//! (`calibrate_roll`). Over the issue-14 sweep the tread's area P95 went from 4.1 to 3.2 % and its
+//! pmax maximum from 14.6 to 12.3 %. For a wide, conformal patch across the rail's arcs the rolled
+//! contact's weighted reference point sits elsewhere on the wheel: on S1002/UIC60 (1360 mm, left
+//! wheel, dy 4.1 mm, 50 kN, roll −4 mrad from equilibrium) the mapped rolling radius was 0.070 mm
+//! and the contact angle 5.2 mrad off, enough for 8 % of μF_z in the longitudinal force at low μ.
+//! The patch's **frame** (contact angle, rolling radius, reference point, rail point) therefore has
+//! a second mapping, [`NodeField::FrameShiftPerRoll`], calibrated by the solver: each row is solved
+//! again at ±[`ROLL_FIT`] at the pose the first mapping sends to the node (the roll probe), the
+//! node whose wheel angle δ ∓ θ equals the probe contact's is where that pose belongs, and c₁ᶠ, c₂ᶠ
+//! go exactly through both (`calibrate_roll`; the first mapping's where the probe's contact is on a
+//! part of the wheel that touches at no node, e.g. across a contact jump). On the example at roll
+//! −4 mrad the frame's rolling radius is then 0.006 mm off (was 0.070), the angle 0.9 mrad (was
+//! 5.2); at −5 mrad, the end of the fitted range, still 0.065 mm and 3.7 mrad. Over the issue-14
+//! sweep the tread force's P95 went from 2.5 to 1.3 % of μF_z. The step finds both roots.
 //!
 //! # Yaw
 //! The table is built at yaw 0. A yawed wheel touches the rail with the lowest points of its rows,
