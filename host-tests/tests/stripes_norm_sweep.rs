@@ -506,7 +506,9 @@ fn stripes_against_norm_on_the_flange_root_band() {
 }
 
 /// Diagnosis of one sweep case: `B2B=1360 DY=4.75 LOAD=83300 SIDE=right cargo test -p
-/// wrc-host-tests --release --test stripes_norm_sweep diag -- --ignored --nocapture`.
+/// wrc-host-tests --release --test stripes_norm_sweep diag -- --ignored --nocapture`; with
+/// `MB=<y_ws>` (and `SIDE`) the Manchester row instead. Per sample: STRIPES' gap, curvature,
+/// ε, depth, peak pressure and strip length beside NORM's row (peak pressure, contact length).
 #[test]
 #[ignore]
 fn diag() {
@@ -527,8 +529,23 @@ fn diag() {
         env("LOAD", "83300").parse().unwrap(),
     )
     .unwrap();
-    let sol = solve_sweep_case(&w, &r, &c, &NormGridOptions::default()).unwrap();
-    let mat = wrc_kernel::Material::<f64>::steel();
+    let (sol, mat) = if let Ok(y) = std::env::var("MB") {
+        let y: f64 = y.parse().unwrap();
+        let row = mbench_rows()
+            .unwrap()
+            .into_iter()
+            .find(|x| x.side == side && (x.y_ws - y).abs() < 1e-9)
+            .unwrap();
+        (
+            solve_mbench_row(&w, &r, &row, &NormGridOptions::default()).unwrap(),
+            mbench_material(),
+        )
+    } else {
+        (
+            solve_sweep_case(&w, &r, &c, &NormGridOptions::default()).unwrap(),
+            wrc_kernel::Material::<f64>::steel(),
+        )
+    };
     for p in &sol.patches {
         println!(
             "patch load {:.0} angle {:.3} approach kernel {:.5} NORM {:.5}; pmax {:.0}/{:.0} area {:.1}/{:.1}",
