@@ -546,6 +546,19 @@ fn diag() {
             wrc_kernel::Material::<f64>::steel(),
         )
     };
+    println!(
+        "wheel converged {} {:?}",
+        sol.wheel.converged,
+        (
+            sol.wheel.iterations,
+            sol.wheel.coupling_rounds,
+            sol.wheel
+                .patches
+                .iter()
+                .map(|p| (p.result.converged, p.result.iterations))
+                .collect::<Vec<_>>()
+        )
+    );
     for p in &sol.patches {
         println!(
             "patch load {:.0} angle {:.3} approach kernel {:.5} NORM {:.5}; pmax {:.0}/{:.0} area {:.1}/{:.1}",
@@ -555,6 +568,13 @@ fn diag() {
         let rec = StripesConfig::<f64>::recommended();
         for (name, cfg) in [
             ("rec", rec),
+            (
+                "tangent",
+                StripesConfig {
+                    h_mode: HMode::EpsTangent,
+                    ..rec
+                },
+            ),
             (
                 "EpsLocal l0=0",
                 StripesConfig {
@@ -593,7 +613,7 @@ fn diag() {
                 pm,
                 (0..8).filter_map(|k| st.basin_info(k)).collect::<Vec<_>>()
             );
-            if name == "rec" {
+            if name == "rec" || name == "tangent" {
                 let g = &p.grid;
                 for (i, sm) in p.stripes_samples.iter().enumerate() {
                     let j = ((sm.y - g.y0) / g.dy).floor();
@@ -662,6 +682,13 @@ fn variants() {
     let rec = StripesConfig::<f64>::recommended();
     let variants = [
         ("rec", rec),
+        (
+            "tangent",
+            StripesConfig {
+                h_mode: HMode::EpsTangent,
+                ..rec
+            },
+        ),
         (
             "rec, interaction off",
             StripesConfig {
@@ -880,6 +907,15 @@ fn variants() {
                 }
                 dp.push(pk / pn - 1.0);
                 da.push(ak / an - 1.0);
+                if std::env::var("PERCASE").is_ok() {
+                    println!(
+                        "CASE {name} | {set} | {:.0} {:.3} | {:+.1} | {:+.1}",
+                        m.load,
+                        m.frame.angle,
+                        100.0 * (pk / pn - 1.0),
+                        100.0 * (ak / an - 1.0)
+                    );
+                }
             }
             let (pm, px, p10, p20) = stats(&dp);
             let (am, ax, a10, a20) = stats(&da);
@@ -899,13 +935,13 @@ fn variants() {
 /// crosses zero; with the default soft floor (`b_floor` 0.1) a scan of the Manchester rows
 /// (δ_v 0.005…0.045 mm, 3…25 kN, four h modes) finds none, so the case fixes `b_floor` 0 to keep
 /// exercising the empty-region path. Case (found by that scan, `stripes_continuity_diag
-/// sliver_scan`): Manchester left wheel y_ws = 1 mm at δ_v = 0.017 mm, 25 kN, the default
-/// `EpsLocal` (two fine regions: a sliver and the tread).
+/// sliver_scan`): Manchester left wheel y_ws = 1 mm at δ_v = 0.017 mm, 25 kN, `EpsLocal` (the
+/// default when it was found; two fine regions: a sliver and the tread).
 #[test]
 fn sliver_region_does_not_fail_the_patch() {
     use wrc_kernel::geometry::{contact_patches, PatchOptions, Patches, Side};
     use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
-    use wrc_kernel::stripes::{StripSample, StripesConfig};
+    use wrc_kernel::stripes::{HMode, StripSample, StripesConfig};
     let (w, r) = tables().unwrap();
     let row = mbench_rows()
         .unwrap()
@@ -932,6 +968,7 @@ fn sliver_region_does_not_fail_the_patch() {
         .collect();
     let mut cfg = PipelineConfig::<f64>::recommended(0.3, 2000.0);
     cfg.stripes = StripesConfig {
+        h_mode: HMode::EpsLocal,
         b_floor: 0.0,
         interaction: false,
         merge_depth: 0.0,

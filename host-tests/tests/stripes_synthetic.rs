@@ -20,6 +20,7 @@ fn all_configs() -> Vec<(&'static str, StripesConfig<f64>)> {
         HMode::EpsLocal,
         HMode::EpsSmoothed(2.0),
         HMode::EpsWeighted(2.0),
+        HMode::EpsTangent,
     ] {
         for l in [L0Mode::Off, L0Mode::HertzB, L0Mode::PatchFraction(0.25)] {
             v.push((
@@ -173,6 +174,13 @@ fn double_well_continuity() {
             StripesConfig {
                 h_mode: HMode::EpsLocal,
                 l0_mode: L0Mode::Off,
+                ..rec
+            },
+        ),
+        (
+            "EpsTangent",
+            StripesConfig {
+                h_mode: HMode::EpsTangent,
                 ..rec
             },
         ),
