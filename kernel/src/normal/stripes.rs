@@ -239,8 +239,8 @@ pub struct StripesConfig<T> {
     /// | `EpsLocal`, coupling off, `merge_depth` 0.25 | 4.70 / 29.7, 6.25 / 13.0 | — | — | — |
     /// | `EpsWeighted(1)`, coupling off, `merge_depth` 0 | — | 2.43 / 14.2, 2.55 / 9.0 | 3.51 / 8.2, 15.0 / 36.3 | 0.50 / 4.2, 1.96 / 11.0 |
     /// | `EpsWeighted(1)`, coupling on, `merge_depth` 0 | 2.9 / 15.6, 1.6 / 6.7 (re-solve) | 2.47 / 14.2, 2.55 / 9.0 | 3.94 / 8.2, 15.8 / 37.0 | 0.57 / 4.6, 1.95 / 11.0 |
-    /// | `EpsLocal`, coupling on, `merge_depth` 0.25 (default until 2026-12-05) | 3.07 / 17.8, 4.74 / 10.6 | 2.11 / 14.2, 3.26 / 10.3 | 0.79 / 1.3, 5.97 / 9.2 | 0.40 / 2.9, 1.90 / 10.8 |
-    /// | **`EpsTangent`, coupling on, `merge_depth` 0.25, prominence scale √(δ δ_s) (default)** | **3.18 / 17.5, 1.61 / 7.7** | **2.17 / 14.0, 2.50 / 9.2** | **1.04 / 1.1, 0.49 / 1.1** | **0.35 / 2.3, 1.60 / 10.8** |
+    /// | **`EpsLocal`, coupling on, `merge_depth` 0.25 (default)** | **3.07 / 17.8, 4.74 / 10.6** | **2.11 / 14.2, 3.26 / 10.3** | **0.79 / 1.3, 5.97 / 9.2** | **0.40 / 2.9, 1.90 / 10.8** |
+    /// | `EpsTangent` (option), coupling on, `merge_depth` 0.25, prominence scale √(δ δ_s) | 3.22 / 17.5, 1.58 / 7.8 | 2.19 / 14.0, 2.49 / 9.2 | 1.04 / 1.1, 0.49 / 1.0 | 0.35 / 2.3, 1.59 / 10.8 |
     ///
     /// (The transition shifts are found per variant by bisecting where the kernel's contact
     /// signature changes, so each row has its own set.) With `merge_depth` 0 the band's worst
@@ -512,11 +512,7 @@ pub fn solve_piecewise_linear<T: Real>(
         }
         (f, slope)
     };
-    let tol = if T::EPSILON < c(1e-10) {
-        c::<T>(1e-12)
-    } else {
-        c::<T>(4e-6)
-    } * target;
+    let tol = load_tolerance(target);
     let mut lo = t_min;
     let mut hi = t_min + target / s_at_min;
     let mut iterations = 0;
@@ -769,10 +765,8 @@ pub struct Stripes<T, const NS: usize, const NB: usize, const NR: usize> {
     basins: [Basin<T>; NB],
     nb: usize,
     e_star: T,
-    /// [`HMode::EpsTangent`]: e_i follows the gap in the partition's load controls.
+    /// [`HMode::EpsTangent`]: the partition's load controls solve e_i(δ) with the approach.
     tangent: bool,
-    /// Inside the coupling's fixed point (e_i held, as the partition).
-    coupling: bool,
     /// [`HMode::EpsTangent`]: ε_t,i of the tangent curvature (= ε_i where it does not apply).
     et: [T; NS],
 }
@@ -783,6 +777,35 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Default
     fn default() -> Self {
         Self::new()
     }
+}
+
+/// Which depth factors a piecewise-linear load control uses.
+#[derive(Clone, Copy)]
+enum DepthFactor {
+    /// e_i as set by the mode.
+    Current,
+    /// The local ε_i.
+    Local,
+    /// ε_t,i of [`HMode::EpsTangent`].
+    Tangent,
+}
+
+/// Hertz m, n, r of (A, B): the table where it covers the ratio, else the root solve.
+fn mnr<T: Real>(a: T, b: T) -> Result<(T, T, T), Error> {
+    match crate::hertz_table::mnr(a, b) {
+        Some(v) => Ok(v),
+        None => hertz::coefficients(a, b).map(|h| (h.m, h.n, h.r)),
+    }
+}
+
+/// Residual tolerance of the load controls: 1e-12 (f64) / 4e-6 (f32) of the load.
+fn load_tolerance<T: Real>(load: T) -> T {
+    let rel = if T::EPSILON < c(1e-10) {
+        c::<T>(1e-12)
+    } else {
+        c::<T>(4e-6)
+    };
+    rel * load
 }
 
 fn smoothstep<T: Real>(u: T) -> T {
@@ -832,7 +855,6 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             nb: 0,
             e_star: T::ZERO,
             tangent: false,
-            coupling: false,
             et: [T::ZERO; NS],
         }
     }
@@ -1022,10 +1044,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         iterations += it;
         converged &= conv;
         if cfg.interaction && self.nb >= 2 {
-            self.coupling = true;
-            let coupled = self.couple(samples, load, cfg);
-            self.coupling = false;
-            let (it, conv) = coupled?;
+            let (it, conv) = self.couple(samples, load, cfg)?;
             iterations += it;
             converged &= conv;
         }
@@ -1144,13 +1163,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             let a = s.curv_a;
             let b = effective_curvature(self.bf[i], math::max(cfg.b_min, cfg.b_floor * a));
             self.bf[i] = b;
-            let (m, nn, r) = match crate::hertz_table::mnr(a, b) {
-                Some(v) => v,
-                None => {
-                    let h = hertz::coefficients(a, b)?;
-                    (h.m, h.n, h.r)
-                }
-            };
+            let (m, nn, r) = mnr(a, b)?;
             let ratio = nn / m;
             self.nm[i] = ratio;
             self.at[i] = ratio * ratio * b;
@@ -1212,13 +1225,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             if !(b > bf) {
                 continue;
             }
-            let (_, nn, rr) = match crate::hertz_table::mnr(a, b) {
-                Some(v) => v,
-                None => {
-                    let h = hertz::coefficients(a, b)?;
-                    (h.m, h.n, h.r)
-                }
-            };
+            let (_, nn, rr) = mnr(a, b)?;
             self.et[i] = math::min(nn * nn * b / (rr * (a + b)), self.eps[i]);
         }
         Ok(())
@@ -1254,16 +1261,14 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         load: T,
     ) -> Result<LoadControl<T>, Error> {
         let n = self.n;
+        self.tangent_eps(samples)?;
         let mut iterations = 0;
         let mut bracket = [T::ZERO; 2];
-        for (k, b) in bracket.iter_mut().enumerate() {
-            for (i, smp) in samples.iter().enumerate().take(n) {
-                let ei = if k == 0 { self.eps[i] } else { self.et[i] };
-                self.tmp[i] = self.kst[i] * smp.dy * ei;
-                self.hu[i] = self.zref[i] + (self.z[i] + self.uz[i] - self.zref[i]) / ei;
-            }
-            let (sv, tv) = (&self.tmp, &self.hu);
-            let lc = solve_piecewise_linear(n, load, None, |i| (sv[i], tv[i]))?;
+        for (b, e) in bracket
+            .iter_mut()
+            .zip([DepthFactor::Local, DepthFactor::Tangent])
+        {
+            let lc = self.linear_solve(samples, load, None, e)?;
             iterations += lc.iterations;
             *b = lc.delta;
         }
@@ -1278,11 +1283,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             }
             f
         };
-        let tol = if T::EPSILON < c(1e-10) {
-            c::<T>(1e-12)
-        } else {
-            c::<T>(4e-6)
-        } * load;
+        let tol = load_tolerance(load);
         let (mut lo, mut hi) = (bracket[0], bracket[1]);
         let (mut flo, mut fhi) = (residual(self, lo), residual(self, hi));
         let mut delta = if math::abs(flo) <= math::abs(fhi) {
@@ -1323,10 +1324,8 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         for i in 0..n {
             self.e[i] = self.tangent_weighted(i, delta);
-            self.hu[i] =
-                self.e[i] * (delta - self.zref[i]) - (self.z[i] + self.uz[i] - self.zref[i]);
         }
-        self.delta_last = delta;
+        self.set_depths(delta);
         Ok(LoadControl {
             delta,
             iterations,
@@ -1334,35 +1333,66 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         })
     }
 
-    /// Load control with the current z_ref, e; stores the unclipped depths in `hu`.
+    /// Load control of the partition's passes: [`Self::load_control`], or with
+    /// [`HMode::EpsTangent`] the one that solves e_i(δ) with the approach.
+    fn pass_load_control(
+        &mut self,
+        samples: &[StripSample<T>],
+        load: T,
+    ) -> Result<LoadControl<T>, Error> {
+        if self.tangent {
+            self.load_control_tangent(samples, load)
+        } else {
+            self.load_control(samples, load)
+        }
+    }
+
+    /// Load control with the current z_ref, e (held: also in the coupling's fixed point, for
+    /// every mode); stores the unclipped depths in `hu`.
     fn load_control(
         &mut self,
         samples: &[StripSample<T>],
         load: T,
     ) -> Result<LoadControl<T>, Error> {
-        let n = self.n;
-        if self.tangent && !self.coupling {
-            self.tangent_eps(samples)?;
-            return self.load_control_tangent(samples, load);
-        }
-        for (i, smp) in samples.iter().enumerate().take(n) {
-            let ei = self.e[i];
-            self.tmp[i] = self.kst[i] * smp.dy * ei;
-            self.hu[i] = self.zref[i] + (self.z[i] + self.uz[i] - self.zref[i]) / ei;
-        }
         let hint = if self.delta_last > T::ZERO {
             Some(self.delta_last)
         } else {
             None
         };
-        let (sv, tv) = (&self.tmp, &self.hu);
-        let lc = solve_piecewise_linear(n, load, hint, |i| (sv[i], tv[i]))?;
-        for i in 0..n {
-            self.hu[i] =
-                self.e[i] * (lc.delta - self.zref[i]) - (self.z[i] + self.uz[i] - self.zref[i]);
-        }
-        self.delta_last = lc.delta;
+        let lc = self.linear_solve(samples, load, hint, DepthFactor::Current)?;
+        self.set_depths(lc.delta);
         Ok(lc)
+    }
+
+    /// The piecewise-linear load control (§6 step 7) with the depth factors `e`.
+    fn linear_solve(
+        &mut self,
+        samples: &[StripSample<T>],
+        load: T,
+        hint: Option<T>,
+        factor: DepthFactor,
+    ) -> Result<LoadControl<T>, Error> {
+        let n = self.n;
+        for (i, smp) in samples.iter().enumerate().take(n) {
+            let ei = match factor {
+                DepthFactor::Current => self.e[i],
+                DepthFactor::Local => self.eps[i],
+                DepthFactor::Tangent => self.et[i],
+            };
+            self.tmp[i] = self.kst[i] * smp.dy * ei;
+            self.hu[i] = self.zref[i] + (self.z[i] + self.uz[i] - self.zref[i]) / ei;
+        }
+        let (sv, tv) = (&self.tmp, &self.hu);
+        solve_piecewise_linear(n, load, hint, |i| (sv[i], tv[i]))
+    }
+
+    /// The unclipped depths `hu` at the approach `delta` with the current e; `delta_last`.
+    fn set_depths(&mut self, delta: T) {
+        for i in 0..self.n {
+            self.hu[i] =
+                self.e[i] * (delta - self.zref[i]) - (self.z[i] + self.uz[i] - self.zref[i]);
+        }
+        self.delta_last = delta;
     }
 
     /// The iterated partition of §6 item 8 (module docs). Returns (iterations, converged, passes).
@@ -1387,7 +1417,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         if matches!(cfg.h_mode, HMode::Eps0) {
             self.e[..n].fill(eps_deep);
         }
-        let lc = self.load_control(samples, load)?;
+        let lc = self.pass_load_control(samples, load)?;
         let mut iterations = lc.iterations;
         let mut converged = lc.converged;
         let mut passes = 1;
@@ -1398,7 +1428,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                 break;
             }
             self.assign_ref(delta, cfg);
-            let lc = self.load_control(samples, load)?;
+            let lc = self.pass_load_control(samples, load)?;
             iterations += lc.iterations;
             converged &= lc.converged;
             passes = pass;
