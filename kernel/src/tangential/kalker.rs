@@ -1,12 +1,15 @@
 //! Kalker's creepage coefficients C11, C22, C23, C33 (methods.md §2).
 //!
 //! The table [`KALKER_TABLE`] is `data/kalker_coefficients.csv` transcribed (a host test reads
-//! the CSV and asserts equality). [`coefficients`] applies CONTACT's `linrol` rule exactly: linear
-//! interpolation in g = min(a/b, b/a) within the table of its case, quadratic Lagrange interpolation
-//! of 1/C in ν through ν = 0, ¼, ½, and Kalker's asymptotes for g < 0.101.
+//! the CSV and asserts equality). Within the table (g = min(a/b, b/a) ≥ 0.1) [`coefficients`]
+//! applies CONTACT's `linrol` rule exactly: linear interpolation in g within the table of its case,
+//! quadratic Lagrange interpolation of 1/C in ν through ν = 0, ¼, ½. Below the table it departs
+//! from CONTACT on purpose: Kalker's asymptotes plus the table's offset at the edge, fading
+//! linearly to 0 at g = 0, instead of CONTACT's bare asymptotes from g = 0.101, which jump (see
+//! [`coefficients`]).
 //!
-//! C33 (single source, **\[UNCERTAIN\]** to the last digit) uses the same table rule; below the table it
-//! uses π²/(16(1−ν)g) for a/b → 0 and holds the b/a = 0.1 row for b/a → 0 (methods.md §2 item 4).
+//! C33 (single source, **\[UNCERTAIN\]** to the last digit) uses the same rules; its asymptotes are
+//! π²/(16(1−ν)g) for a/b → 0 and the b/a = 0.1 row held for b/a → 0 (methods.md §2 item 4).
 
 use crate::error::{check_finite, check_positive, Error};
 use crate::math::{self, c};
@@ -232,7 +235,23 @@ fn poisson<T: Real>(c0: T, c25: T, c50: T, nu: T) -> T {
     T::ONE / inv
 }
 
+/// Lowest g = min(a/b, b/a) of the table; below it the asymptotes with the edge correction.
+pub const TABLE_EDGE: f64 = 0.1;
+
 /// C11, C22, C23, C33 at semi-axis ratio `a_over_b` = a/b (a along x) and Poisson ratio `nu`.
+///
+/// With g = min(a/b, b/a): for g ≥ [`TABLE_EDGE`] CONTACT's `linrol` rule (linear in g within
+/// the table of the case, quadratic in 1/C over ν), except that the row is found by ⌊10g⌋
+/// rather than ⌊10g − 0.005⌋ (continuous; the same at every row); below it Kalker's asymptotes plus the
+/// table's offset at the edge fading linearly to 0 at g = 0:
+///
+/// C(g) = C_asy(g) + (g/0.1)·(C_tab(0.1) − C_asy(0.1)),
+///
+/// continuous at the edge and exact as g → 0. CONTACT switches at g = 0.101 to the bare
+/// asymptotes, a jump of up to 6 % (C23, a/b side) and 4 % (C11, b/a side) that made the forces
+/// jump with the load (a strip's local ellipse crossing the edge: F_y/N −0.4 % within 0.5 N at
+/// S1002/UIC60 1360 mm, dy −5.3 mm, 64.8 kN) and the per-wheel solve cycle between the two sides
+/// (methods.md §2 item 4).
 ///
 /// Errors: non-finite or non-positive a/b; `OutOfRange("nu")` unless 0 ≤ ν ≤ ½.
 pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>, Error> {
@@ -246,60 +265,88 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
     if !math::is_finite(g) || g <= T::ZERO {
         return Err(Error::OutOfRange("a/b"));
     }
-    if g >= c(0.101) {
+    let out = if g >= c(TABLE_EDGE) {
         let x = c::<T>(10.0) * g;
-        // k = floor(x − 0.005) clamped to 1 … 9, by comparisons (no float → integer conversion:
-        // a software call for f32 → f64 → usize on a Cortex-M4F)
-        let y = x - c(0.005);
+        // k = floor(x) clamped to 1 … 9, by comparisons (no float → integer conversion: a
+        // software call for f32 → f64 → usize on a Cortex-M4F). CONTACT takes floor(x − 0.005),
+        // which extrapolates the row below by up to 0.005 of a row step past each row and then
+        // jumps (C33 by 0.3 % at a/b = 0.2005); floor(x) agrees with it at the rows and is
+        // continuous between them.
         let mut k = 1;
         for j in 2..=9 {
-            if y >= T::from_usize(j) {
+            if x >= T::from_usize(j) {
                 k = j;
             }
         }
         let f = x - T::from_usize(k);
-        let (il, ih) = (row_index(case_ab, k), row_index(case_ab, k + 1));
-        let (lo, lo32) = (&KALKER_TABLE[il].c, &KALKER_TABLE_F32[il]);
-        let (hi, hi32) = (&KALKER_TABLE[ih].c, &KALKER_TABLE_F32[ih]);
-        let mut out = [T::ZERO; 4];
-        for (q, o) in out.iter_mut().enumerate() {
-            let mut v = [T::ZERO; 3];
-            for (p, vp) in v.iter_mut().enumerate() {
-                let i = 3 * q + p;
-                *vp = f * T::from_rounded(hi[i], hi32[i])
-                    + (T::ONE - f) * T::from_rounded(lo[i], lo32[i]);
-            }
-            *o = poisson(v[0], v[1], v[2], nu);
-        }
-        return KalkerCoefficients {
-            c11: out[0],
-            c22: out[1],
-            c23: out[2],
-            c33: out[3],
-        }
-        .checked();
+        table(case_ab, k, f, nu)
+    } else {
+        let asy = asymptotes(case_ab, g, math::sqrt(g), math::ln(g), nu);
+        // the asymptotes and the table at the edge (√0.1 and ln 0.1 = −ln 10 as constants)
+        let edge = asymptotes(
+            case_ab,
+            c(TABLE_EDGE),
+            c(0.316_227_766_016_837_94),
+            -c::<T>(core::f64::consts::LN_10),
+            nu,
+        );
+        let tab = table(case_ab, 1, T::ZERO, nu);
+        let w = g / c::<T>(TABLE_EDGE);
+        core::array::from_fn(|q| asy[q] + w * (tab[q] - edge[q]))
+    };
+    KalkerCoefficients {
+        c11: out[0],
+        c22: out[1],
+        c23: out[2],
+        c33: out[3],
     }
+    .checked()
+}
+
+/// C11, C22, C23, C33 of the table of the case, linear in g between rows k and k + 1 (weight
+/// `f` on row k + 1), quadratic in 1/C over ν.
+fn table<T: Real>(case_ab: bool, k: usize, f: T, nu: T) -> [T; 4] {
+    let (il, ih) = (row_index(case_ab, k), row_index(case_ab, k + 1));
+    let (lo, lo32) = (&KALKER_TABLE[il].c, &KALKER_TABLE_F32[il]);
+    let (hi, hi32) = (&KALKER_TABLE[ih].c, &KALKER_TABLE_F32[ih]);
+    let mut out = [T::ZERO; 4];
+    for (q, o) in out.iter_mut().enumerate() {
+        let mut v = [T::ZERO; 3];
+        for (p, vp) in v.iter_mut().enumerate() {
+            let i = 3 * q + p;
+            *vp = f * T::from_rounded(hi[i], hi32[i])
+                + (T::ONE - f) * T::from_rounded(lo[i], lo32[i]);
+        }
+        *o = poisson(v[0], v[1], v[2], nu);
+    }
+    out
+}
+
+/// Kalker's asymptotes (methods.md §2 item 4) at g with √g and ln g given: C11, C22, C23, C33
+/// for a ≪ b (`case_ab`) or a ≫ b. C33 for a ≫ b holds the b/a = 0.1 row (no asymptote known).
+fn asymptotes<T: Real>(case_ab: bool, g: T, sqrt_g: T, ln_g: T, nu: T) -> [T; 4] {
     let pi = T::PI;
     let one_m_nu = T::ONE - nu;
+    let ln16 = c::<T>(2.772_588_722_239_781);
     if case_ab {
         // a ≪ b.
         let c11 = pi * pi / (c::<T>(4.0) * one_m_nu);
         let c22 = pi * pi / c::<T>(4.0);
-        let c23 = pi * math::sqrt(g) / (c::<T>(3.0) * one_m_nu)
-            * (T::ONE + nu * (math::ln(c::<T>(16.0) / g) - c::<T>(5.0)));
+        let c23 =
+            pi * sqrt_g / (c::<T>(3.0) * one_m_nu) * (T::ONE + nu * (ln16 - ln_g - c::<T>(5.0)));
         let c33 = pi * pi / (c::<T>(16.0) * one_m_nu * g);
-        KalkerCoefficients { c11, c22, c23, c33 }.checked()
+        [c11, c22, c23, c33]
     } else {
         // a ≫ b.
         // Λ = ln(16/g²) = ln 16 − 2 ln g (no underflow of g²).
-        let lam = math::ln(c::<T>(16.0)) - T::TWO * math::ln(g);
-        let k3 = c::<T>(3.0) - math::ln(c::<T>(4.0));
+        let lam = ln16 - T::TWO * ln_g;
+        let k3 = c::<T>(1.613_705_638_880_109_4); // 3 − ln 4
         let d1 = lam - T::TWO * nu;
         let c11 = T::TWO * pi / (d1 * g) * (T::ONE + k3 / d1);
         let d2 = one_m_nu * lam + T::TWO * nu;
         let c22 = T::TWO * pi / g * (T::ONE + one_m_nu * k3 / d2) / d2;
-        let c23 = T::TWO * pi
-            / (c::<T>(3.0) * g * math::sqrt(g) * (one_m_nu * lam - T::TWO + c::<T>(4.0) * nu));
+        let c23 =
+            T::TWO * pi / (c::<T>(3.0) * g * sqrt_g * (one_m_nu * lam - T::TWO + c::<T>(4.0) * nu));
         let r = &KALKER_TABLE[18].c;
         let r32 = &KALKER_TABLE_F32[18];
         let c33 = poisson(
@@ -308,7 +355,7 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
             T::from_rounded(r[11], r32[11]),
             nu,
         );
-        KalkerCoefficients { c11, c22, c23, c33 }.checked()
+        [c11, c22, c23, c33]
     }
 }
 
