@@ -305,6 +305,7 @@ pub fn coefficients<T: Real>(a_over_b: T, nu: T) -> Result<KalkerCoefficients<T>
 
 /// C11, C22, C23, C33 of the table of the case, linear in g between rows k and k + 1 (weight
 /// `f` on row k + 1), quadratic in 1/C over ν.
+#[inline(always)]
 fn table<T: Real>(case_ab: bool, k: usize, f: T, nu: T) -> [T; 4] {
     let (il, ih) = (row_index(case_ab, k), row_index(case_ab, k + 1));
     let (lo, lo32) = (&KALKER_TABLE[il].c, &KALKER_TABLE_F32[il]);
@@ -324,6 +325,7 @@ fn table<T: Real>(case_ab: bool, k: usize, f: T, nu: T) -> [T; 4] {
 
 /// Kalker's asymptotes (methods.md §2 item 4) at g with √g and ln g given: C11, C22, C23, C33
 /// for a ≪ b (`case_ab`) or a ≫ b. C33 for a ≫ b holds the b/a = 0.1 row (no asymptote known).
+#[inline(always)]
 fn asymptotes<T: Real>(case_ab: bool, g: T, sqrt_g: T, ln_g: T, nu: T) -> [T; 4] {
     let pi = T::PI;
     let one_m_nu = T::ONE - nu;
