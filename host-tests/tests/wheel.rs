@@ -140,3 +140,43 @@ fn coupling_ends_inside_a_jump_of_the_tangential_solution() {
         );
     }
 }
+
+/// The load loop where the vertical load rises steeply with the approach (kernel `wheel`,
+/// `loglog_step`): S1002/UIC60 1360 mm right wheel, dy −5.42 mm, equilibrium roll, zero
+/// creepage, F_z 62,266.9 N. There F(δ_v) has a local exponent of 8 (a region merging) and the
+/// secant's exponent was clamped to 4: the approach alternated between 0.11382 and 0.11386 mm
+/// (F 62,188 and 62,345 N) for all 30 passes (`converged: false`). Between two points on
+/// either side of the target the secant now interpolates unclamped.
+#[test]
+fn load_loop_converges_where_the_load_rises_steeply() {
+    use wrc_host_tests::realtime::CASES;
+    use wrc_host_tests::wheelrail::{tables, NODES};
+    use wrc_kernel::patch::Creepage;
+    let (w, r) = tables().unwrap();
+    let mat = Material::<f64>::steel();
+    let mut cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
+    cfg.creepage = Some(Creepage {
+        xi: 0.0,
+        eta: 0.0,
+        phi: 0.0,
+    });
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let case = CASES[2];
+    let setup = case.setup::<f64>();
+    let dy = -5.42;
+    let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
+        .unwrap()
+        .roll;
+    let pose = WheelsetPose { dy, yaw: 0.0, roll };
+    let geom =
+        WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
+    let fz = 62_266.9;
+    let s = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
+    assert!(s.converged, "passes {}", s.iterations);
+    assert!(
+        (s.vertical_load - fz).abs() <= 1e-6 * fz,
+        "{}",
+        s.vertical_load
+    );
+    assert!(s.iterations < 30, "passes {}", s.iterations);
+}
