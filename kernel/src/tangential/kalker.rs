@@ -248,9 +248,8 @@ pub const TABLE_EDGE: f64 = 0.1;
 /// C(g) = C_asy(g) + (g/0.1)·(C_tab(0.1) − C_asy(0.1)),
 ///
 /// continuous at the edge and exact as g → 0. CONTACT switches at g = 0.101 to the bare
-/// asymptotes, a jump of up to 6 % (C23, a/b side) and 4 % (C11, b/a side) that made the forces
-/// jump with the load (a strip's local ellipse crossing the edge: F_y/N −0.4 % within 0.5 N at
-/// S1002/UIC60 1360 mm, dy −5.3 mm, 64.8 kN) and the per-wheel solve cycle between the two sides
+/// asymptotes, a jump of up to 6 % (C23, a/b side) and 4 % (C11, b/a side): a strip whose local
+/// ellipse crosses the edge would change its flexibility, and with it its creep force, at once
 /// (methods.md §2 item 4).
 ///
 /// Errors: non-finite or non-positive a/b; `OutOfRange("nu")` unless 0 ≤ ν ≤ ½.
