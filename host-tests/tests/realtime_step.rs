@@ -45,7 +45,8 @@ fn case_tables() -> &'static [(Vec<u8>, BuildReport)] {
             // every node's per-wheel solve converges but one of each 1360 mm table: at dy ∓6.27
             // mm and the 260 kN load node (flange contact, N ≈ 460 kN) STRIPES' load jumps by
             // 4.5 % within 0.4 % of the patch's approach (a = 0.2133 → 0.2142 mm), so that no
-            // approach meets the load (the node is flagged `converged: false`). The 1353 mm
+            // approach meets the load (flagged `converged: false`, the load loop ends at the
+            // jump, `tests/wheel.rs`). The 1353 mm
             // tables have none.
             let allowed = if c.back_to_back == 1360.0 { 1 } else { 0 };
             assert!(rep.not_converged <= allowed, "table {}: {rep:?}", c.label());

@@ -180,3 +180,47 @@ fn load_loop_converges_where_the_load_rises_steeply() {
     );
     assert!(s.iterations < 30, "passes {}", s.iterations);
 }
+
+/// Where the load jumps over F_z (kernel `wheel`, "Load split"): S1002/UIC60 1360 mm right wheel,
+/// dy −6.27216 mm (a node of the 1360 mm table), zero creepage, F_z 260 kN, flange contact.
+/// STRIPES' load jumps from 455.6 to 476.0 kN between patch approaches 0.2133 and 0.2142 mm, so
+/// no δ_v gives F_z: the result is flagged, and the bracketed load loop ends at the jump (1.6 %
+/// above F_z; the secant alone wandered between 241 and 280 kN and ended where pass 30 fell).
+#[test]
+fn load_loop_ends_at_a_jump_of_the_load_flagged() {
+    use wrc_host_tests::realtime::CASES;
+    use wrc_host_tests::wheelrail::{tables, NODES};
+    use wrc_kernel::patch::Creepage;
+    let (w, r) = tables().unwrap();
+    let mat = Material::<f64>::steel();
+    let mut cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
+    cfg.creepage = Some(Creepage {
+        xi: 0.0,
+        eta: 0.0,
+        phi: 0.0,
+    });
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    let case = CASES[2];
+    let setup = case.setup::<f64>();
+    let dy = -6.272159090909092;
+    let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
+        .unwrap()
+        .roll;
+    let pose = WheelsetPose { dy, yaw: 0.0, roll };
+    let geom =
+        WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
+    let fz = 260_000.0;
+    let s = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
+    assert!(!s.converged, "a jump over F_z cannot converge");
+    let off = (s.vertical_load - fz) / fz;
+    assert!(
+        off.abs() <= 0.02,
+        "vertical load {} ({off})",
+        s.vertical_load
+    );
+    eprintln!(
+        "vertical load {:.0} N ({:+.2} %)",
+        s.vertical_load,
+        100.0 * off
+    );
+}
