@@ -73,9 +73,9 @@
 //! −5.42 mm, 62 kN, `tests/wheel.rs`). Once passes on both sides are known, a secant step out of
 //! their bracket, and every step after [`BISECT_AFTER`] passes, bisects the bracket instead: the
 //! loop then converges wherever F(δ_v) is continuous, and where it jumps over F_z it ends at the
-//! jump, flagged `converged: false` (1360 mm, dy ∓6.27 mm, 260 kN, flange contact: STRIPES' load
-//! jumps by 4.5 % within 0.4 % of the patch's approach; the loop ends 1.6 % above F_z, where it
-//! used to wander up to 8 % off).
+//! jump, flagged `converged: false` (measured on a STRIPES load jump since removed — 1360 mm, dy
+//! ∓6.27 mm, 260 kN, flange contact, 4.5 % within 1e-10 mm of approach: the loop ended 1.6 % above
+//! F_z, where the secant alone had wandered up to 8 % off).
 //!
 //! The vertical load also carries the vertical component of each patch's lateral creep force:
 //! with e_y = n × e_x, **F_z = Σ_k (N_k cos δ_k + F_y,k e_y,z)**, e_y,z = −sin δ_k (right wheel),
