@@ -9,7 +9,7 @@
 use wrc_host_tests::profiles;
 use wrc_host_tests::wheelrail::{mbench_rows, MbenchRow as Row};
 use wrc_kernel::geometry::*;
-use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig};
+use wrc_kernel::wheel::{solve_wheel, DefaultWheelWorkspace, WheelConfig, WheelResult};
 use wrc_kernel::Material;
 
 fn rows() -> Vec<Row> {
@@ -86,32 +86,50 @@ fn manchester_wheel_solve_matches_contact() {
     assert!(worst.1 < 10.0, "approach {:.2} %", worst.1);
 }
 
+/// `solve_wheel` cold on the built-in S1002/UIC60 pair: `case` at shift `dy` (yaw 0, equilibrium
+/// roll), F_z `fz`, the table builder's configuration (μ 0.3, 100 km/h), with zero creepage as at
+/// the tables' nodes when `zero_creepage`.
+fn solve_case(
+    case: wrc_host_tests::realtime::Case,
+    dy: f64,
+    fz: f64,
+    zero_creepage: bool,
+) -> WheelResult<f64, 4, 4> {
+    use wrc_host_tests::wheelrail::{tables, NODES};
+    let (w, r) = tables().unwrap();
+    let mut cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
+    if zero_creepage {
+        cfg.creepage = Some(wrc_kernel::patch::Creepage {
+            xi: 0.0,
+            eta: 0.0,
+            phi: 0.0,
+        });
+    }
+    let setup = case.setup::<f64>();
+    let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
+        .unwrap()
+        .roll;
+    let pose = WheelsetPose { dy, yaw: 0.0, roll };
+    let geom =
+        WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
+    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
+    solve_wheel(&geom, fz, &Material::steel(), &cfg, &mut ws, &mut ()).unwrap()
+}
+
 /// The normal–tangential coupling where the tangential solution jumps with the load (kernel
 /// `wheel` docs, "Vertical balance"): S1002/UIC60 1360 mm, both wheels at |dy| 5.3 mm, equilibrium
 /// roll, F_z 62.5 kN, the table builder's configuration (μ 0.3, 100 km/h). F_y/N of the patch
 /// jumps from −0.04019 to −0.04036 between N = 64765.5 and 64766 N (a cell entering a strip of
 /// the FaStrip grid, full slip); the ratios alternated between the two sides for all rounds
-/// (`converged: false`, the only flagged node of the 1360 mm tables). Relaxed, the coupling ends
-/// inside the jump: converged in 5 rounds, and the vertical balance with the final forces holds
-/// to 2.2 N (asserted: 5 N); the final forces are the model's own at the final load.
+/// (`converged: false`). Relaxed, the coupling ends inside the jump: converged in 5 rounds, and
+/// the vertical balance with the final forces holds to 2.2 N (asserted: 5 N); the final forces
+/// are the model's own at the final load.
 #[test]
 fn coupling_ends_inside_a_jump_of_the_tangential_solution() {
     use wrc_host_tests::realtime::CASES;
-    use wrc_host_tests::wheelrail::{tables, NODES};
-    let (w, r) = tables().unwrap();
-    let mat = Material::<f64>::steel();
-    let cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
     for (case, dy) in [(CASES[2], -5.3), (CASES[3], 5.3)] {
-        let setup = case.setup::<f64>();
-        let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
-            .unwrap()
-            .roll;
-        let pose = WheelsetPose { dy, yaw: 0.0, roll };
-        let geom =
-            WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
         let fz = 62_500.0;
-        let s = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
+        let s = solve_case(case, dy, fz, false);
         assert!(
             s.converged,
             "{} dy {dy}: rounds {}",
@@ -149,29 +167,8 @@ fn coupling_ends_inside_a_jump_of_the_tangential_solution() {
 /// either side of the target the secant now interpolates unclamped.
 #[test]
 fn load_loop_converges_where_the_load_rises_steeply() {
-    use wrc_host_tests::realtime::CASES;
-    use wrc_host_tests::wheelrail::{tables, NODES};
-    use wrc_kernel::patch::Creepage;
-    let (w, r) = tables().unwrap();
-    let mat = Material::<f64>::steel();
-    let mut cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
-    cfg.creepage = Some(Creepage {
-        xi: 0.0,
-        eta: 0.0,
-        phi: 0.0,
-    });
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let case = CASES[2];
-    let setup = case.setup::<f64>();
-    let dy = -5.42;
-    let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
-        .unwrap()
-        .roll;
-    let pose = WheelsetPose { dy, yaw: 0.0, roll };
-    let geom =
-        WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
     let fz = 62_266.9;
-    let s = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
+    let s = solve_case(wrc_host_tests::realtime::CASES[2], -5.42, fz, true);
     assert!(s.converged, "passes {}", s.iterations);
     assert!(
         (s.vertical_load - fz).abs() <= 1e-6 * fz,
@@ -190,29 +187,13 @@ fn load_loop_converges_where_the_load_rises_steeply() {
 /// at the jump, 1.6 % above F_z). Now it converges.
 #[test]
 fn flange_contact_node_converges() {
-    use wrc_host_tests::realtime::CASES;
-    use wrc_host_tests::wheelrail::{tables, NODES};
-    use wrc_kernel::patch::Creepage;
-    let (w, r) = tables().unwrap();
-    let mat = Material::<f64>::steel();
-    let mut cfg = WheelConfig::recommended(0.3, 100.0 / 3.6 * 1000.0, 460.0);
-    cfg.creepage = Some(Creepage {
-        xi: 0.0,
-        eta: 0.0,
-        phi: 0.0,
-    });
-    let mut ws = Box::new(DefaultWheelWorkspace::<f64>::new());
-    let case = CASES[2];
-    let setup = case.setup::<f64>();
-    let dy = -6.272159090909092;
-    let roll = equilibrium_roll::<f64, NODES, NODES>(&r, &w, &setup, dy, 0.0, 0.05)
-        .unwrap()
-        .roll;
-    let pose = WheelsetPose { dy, yaw: 0.0, roll };
-    let geom =
-        WheelRail::<f64, NODES, NODES>::place(&r, &w, &setup, &pose, case.side, 0.05).unwrap();
     let fz = 260_000.0;
-    let s = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ()).unwrap();
+    let s = solve_case(
+        wrc_host_tests::realtime::CASES[2],
+        -6.272159090909092,
+        fz,
+        true,
+    );
     assert!(s.converged, "passes {}", s.iterations);
     assert!(
         (s.vertical_load - fz).abs() <= 1e-6 * fz,

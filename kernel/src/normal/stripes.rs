@@ -1022,24 +1022,24 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                 self.basin_extents(samples, cfg.soft_measure);
                 let nb = self.nb;
                 // w_eff,k = max over the runs of basins lo…hi that contain k of (1 − θ) w,
-                // θ the largest link in the run, w half its measure (module docs)
-                for k in 0..nb {
-                    let mut w_eff = T::ZERO;
-                    for lo in 0..=k {
-                        for hi in k..nb {
-                            let mut theta = T::ZERO;
-                            let mut len = T::ZERO;
-                            for q in lo..=hi {
-                                let b = self.basins[q];
-                                if q < hi {
-                                    theta = math::max(theta, b.theta);
-                                }
-                                len += b.len;
-                            }
-                            w_eff = math::max(w_eff, (T::ONE - theta) * T::HALF * len);
+                // θ the largest link in the run, w half its measure (module docs): each run's
+                // value, grown one basin at a time, goes to every basin in it
+                self.l0[..nb].fill(T::ZERO);
+                for lo in 0..nb {
+                    let (mut theta, mut len) = (T::ZERO, T::ZERO);
+                    for hi in lo..nb {
+                        if hi > lo {
+                            theta = math::max(theta, self.basins[hi - 1].theta);
+                        }
+                        len += self.basins[hi].len;
+                        let w = (T::ONE - theta) * T::HALF * len;
+                        for l in &mut self.l0[lo..=hi] {
+                            *l = math::max(*l, w);
                         }
                     }
-                    self.l0[k] = f * w_eff;
+                }
+                for l in &mut self.l0[..nb] {
+                    *l = f * *l;
                 }
             }
         }
