@@ -601,8 +601,9 @@ fn damaged_truncated_or_foreign_tables_are_typed_errors() {
 type Distance<'a> = dyn Fn(f64, &StepResult<f64, K>, &StepResult<f64, K>) -> f64 + 'a;
 
 /// A jump found by [`walk`] whose table-side inputs to the strip forces (load, frame,
-/// creepages, pmax, area of every slot) are continuous: a discontinuity of the closed-form strip
-/// forces (`fastrip::strip_forces`), not of the table.
+/// creepages, pmax, area of every slot) are continuous at zero creepage: most likely a
+/// discontinuity of the closed-form strip forces (`fastrip::strip_forces`), though the check
+/// cannot see a table jump crossed only by the coupling round's load ([`walk`]).
 #[derive(Debug)]
 struct StripJump {
     #[allow(dead_code)] // printed (Debug)
@@ -615,8 +616,8 @@ struct StripJump {
 }
 
 /// Walks `pose_at(u)` at the load `fz_at(u)` for u = 0 … `n` in unit steps: no step of the total
-/// force may move it by more than 0.5 % of μF_z (F_z at the step's start) unless it is a steep stretch, not a jump: such a step is
-/// cut in 10 and every part checked the same way, down to 10⁻⁴ of a step (a jump stays a jump
+/// force may move it by more than 0.5 % of μF_z (F_z at the step's start) unless it is a steep
+/// stretch, not a jump: such a step is cut in 10 and every part checked the same way, down to 10⁻⁴ of a step (a jump stays a jump
 /// however fine the cut; a steep continuous stretch falls below 0.5 %). At a jump the table's
 /// part is checked alone: the step at μ = 10⁻⁹ (creep forces nil, so the vertical balance and
 /// everything the table gives depend on the pose only) must be continuous there (load, frame,
@@ -831,9 +832,8 @@ fn realtime_step_is_continuous_in_yaw_and_roll() {
 /// under the yaw's lateral creepage, so that the coupling round's load differs from the load of
 /// zero creepage): no jump above 0.5 % of μF_z ([`walk`]; at the flange root, dy −8.5 mm, the
 /// closed-form strip forces have steps of 0.1–0.3 % of μF_z at 47, 102, 125 and 137 kN, below
-/// it). The load is where the step
-/// interpolates between its five load nodes and where the frame's interpolation once switched
-/// its nodes at the midpoints (`step.rs` `frame_weights`).
+/// it). The load is where the step interpolates between its five load nodes and where the
+/// frame's interpolation once switched its nodes at the midpoints (`step.rs` `frame_weights`).
 #[test]
 fn realtime_step_is_continuous_in_the_load() {
     let (w, r) = tables().unwrap();

@@ -90,11 +90,12 @@
 //! sum over a fixed cell grid, and a cell entering a strip at its leading edge restarts the
 //! strip's direction march (S1002/UIC60 1360 mm, dy ±5.3 mm, 62.5 kN, full slip: F_y/N_k
 //! −0.04019 → −0.04036 between N_k = 64765.5 and 64766 N). The ratios then alternated between
-//! the two sides for every round (a 2-cycle, flagged `converged: false`). When a round changes the ratios by more than half the previous
-//! round's change from round 2 on ([`RELAX_AFTER`]), the coupling relaxes: each later round moves
-//! the ratios by half the step of the one before (r_k ← r_k + ω(r_k,new − r_k), ω = ½, ¼, …), which
-//! ends inside the jump; the vertical balance with the final forces then holds to about N_k |Δr_k| sin δ_k
-//! (2.2 N of 62.5 kN there, in 5 rounds).
+//! the two sides for every round (a 2-cycle, flagged `converged: false`). When a round changes
+//! the ratios by more than half the previous round's change from round 2 on ([`RELAX_AFTER`]),
+//! the coupling relaxes: each later round moves the ratios by half the step of the one before
+//! (r_k ← r_k + ω(r_k,new − r_k), ω = ½, ¼, …), which ends inside the jump; the vertical balance
+//! with the final forces then holds to about N_k |Δr_k| sin δ_k (2.2 N of 62.5 kN there, in 5
+//! rounds).
 //! A contracting fixed point is never relaxed (its changes shrink by far more than half a round).
 //!
 //! ## Warm start across time steps ([`solve_wheel_warm`], [`WheelState`])
