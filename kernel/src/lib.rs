@@ -38,7 +38,7 @@ pub mod real;
 
 // Short paths (`wrc_kernel::stripes`, `wrc_kernel::step`, …) for the modules of the folders above.
 pub use geometry::{profile, table};
-pub use normal::{hertz, hertz_table, stripes};
+pub use normal::{compliance, hertz, hertz_table, ritz, stripes};
 pub use tangential::{adapt, fastrip, fastsim, kalker, patch};
 pub use wheel::{pipeline, step};
 
