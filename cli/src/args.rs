@@ -33,6 +33,9 @@ pub enum Command {
 pub enum Normal {
     /// STRIPES semi-Hertzian (kernel default for wheel/rail cases).
     Stripes,
+    /// The strip model: STRIPES, then its strips' loads and half-lengths from the elastic
+    /// half-space (`wrc_kernel::ritz`; wheel/rail cases, 0.1–0.5 s per patch).
+    Strips,
     /// One Hertz ellipse (kernel default for elliptic cases).
     Hertz,
     /// Kalker's boundary-element NORM (host reference).
@@ -233,14 +236,17 @@ impl SolveArgs {
     }
 
     /// The normal model used: `--normal`, else hertz for elliptic cases, norm for a wheel/rail
-    /// case with `--tangential exact`, stripes for the other wheel/rail cases.
+    /// case with `--tangential exact`, stripes on the real-time path (`--table`: the tables hold
+    /// STRIPES strips), the strip model for the other wheel/rail cases.
     pub fn normal(&self) -> Normal {
         self.common.normal.unwrap_or(if self.elliptic() {
             Normal::Hertz
         } else if self.common.tangential == Tangential::Exact {
             Normal::Norm
-        } else {
+        } else if self.table.is_some() {
             Normal::Stripes
+        } else {
+            Normal::Strips
         })
     }
 }

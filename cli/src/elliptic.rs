@@ -106,9 +106,10 @@ pub fn solve<T: Real, const S: usize, const C: usize>(
     match cm.normal.unwrap_or(Normal::Hertz) {
         Normal::Hertz => {}
         Normal::Norm => return solve_norm::<T, S, C>(args, keep_cells),
-        Normal::Stripes => {
+        Normal::Stripes | Normal::Strips => {
             return Err(
-                "--normal stripes needs a wheel/rail gap; elliptic cases use hertz or norm".into(),
+                "--normal stripes|strips needs a wheel/rail gap; elliptic cases use hertz or norm"
+                    .into(),
             )
         }
     }
@@ -399,64 +400,64 @@ fn solve_exact(args: &SolveArgs, keep_cells: bool) -> Result<Solved, String> {
     if cm.precision == crate::args::Precision::F32 {
         warnings.push("--tangential exact runs in f64 (host reference)".to_string());
     }
-    let (grid, pn, normal, half, norm_status) = match cm.normal.unwrap_or(Normal::Hertz) {
-        Normal::Hertz => {
-            let g = exact::elliptic_grid(h.a, h.b, nx, ny);
-            let pn = exact::hertz_on(&g, h.a, h.b, h.load);
-            let nf = NormalFields {
-                approach_mm: h.delta,
-                pmax_mpa: h.p0,
-                area_mm2: std::f64::consts::PI * h.a * h.b,
-                x_extent_mm: [-h.a, h.a],
-                y_extent_mm: [-h.b, h.b],
-            };
-            let half = exact::hertz_half_lengths(&g, h.a, h.b);
-            (g, pn, nf, half, None)
-        }
-        Normal::Norm => {
-            let control = if args.approach.is_some() {
-                Control::Penetration(h.delta)
-            } else {
-                Control::Load(h.load)
-            };
-            let (ca, cb) = (h.curv_a, h.curv_b);
-            let g = NGrid::new(
-                nx,
-                ny,
-                2.2 * h.a / nx as f64,
-                2.2 * h.b / ny as f64,
-                -1.1 * h.a,
-                -1.1 * h.b,
-            )
-            .map_err(|e| format!("NORM: {e}"))?;
-            let gap = g.sample(|x, y| ca * x * x + cb * y * y);
-            let sol = Norm::new(g, mat)
-                .and_then(|mut n| n.solve(&gap, control, &Options::default()))
-                .map_err(|e| format!("NORM: {e}"))?;
-            if sol.touches_boundary {
-                warnings.push("NORM contact reaches the grid boundary".to_string());
+    let (grid, pn, normal, half, norm_status) =
+        match cm.normal.unwrap_or(Normal::Hertz) {
+            Normal::Hertz => {
+                let g = exact::elliptic_grid(h.a, h.b, nx, ny);
+                let pn = exact::hertz_on(&g, h.a, h.b, h.load);
+                let nf = NormalFields {
+                    approach_mm: h.delta,
+                    pmax_mpa: h.p0,
+                    area_mm2: std::f64::consts::PI * h.a * h.b,
+                    x_extent_mm: [-h.a, h.a],
+                    y_extent_mm: [-h.b, h.b],
+                };
+                let half = exact::hertz_half_lengths(&g, h.a, h.b);
+                (g, pn, nf, half, None)
             }
-            let (ex, ey) = (
-                sol.extent_x.unwrap_or((0.0, 0.0)),
-                sol.extent_y.unwrap_or((0.0, 0.0)),
-            );
-            let nf = NormalFields {
-                approach_mm: sol.approach,
-                pmax_mpa: sol.p_max,
-                area_mm2: sol.area,
-                x_extent_mm: [ex.0, ex.1],
-                y_extent_mm: [ey.0, ey.1],
-            };
-            let (tg, pn) = wrc_host_tests::tang::from_norm(&sol);
-            let half = exact::norm_half_lengths(&sol);
-            (tg, pn, nf, half, Some(sol.converged))
-        }
-        Normal::Stripes => {
-            return Err(
-                "--normal stripes needs a wheel/rail gap; elliptic cases use hertz or norm".into(),
-            )
-        }
-    };
+            Normal::Norm => {
+                let control = if args.approach.is_some() {
+                    Control::Penetration(h.delta)
+                } else {
+                    Control::Load(h.load)
+                };
+                let (ca, cb) = (h.curv_a, h.curv_b);
+                let g = NGrid::new(
+                    nx,
+                    ny,
+                    2.2 * h.a / nx as f64,
+                    2.2 * h.b / ny as f64,
+                    -1.1 * h.a,
+                    -1.1 * h.b,
+                )
+                .map_err(|e| format!("NORM: {e}"))?;
+                let gap = g.sample(|x, y| ca * x * x + cb * y * y);
+                let sol = Norm::new(g, mat)
+                    .and_then(|mut n| n.solve(&gap, control, &Options::default()))
+                    .map_err(|e| format!("NORM: {e}"))?;
+                if sol.touches_boundary {
+                    warnings.push("NORM contact reaches the grid boundary".to_string());
+                }
+                let (ex, ey) = (
+                    sol.extent_x.unwrap_or((0.0, 0.0)),
+                    sol.extent_y.unwrap_or((0.0, 0.0)),
+                );
+                let nf = NormalFields {
+                    approach_mm: sol.approach,
+                    pmax_mpa: sol.p_max,
+                    area_mm2: sol.area,
+                    x_extent_mm: [ex.0, ex.1],
+                    y_extent_mm: [ey.0, ey.1],
+                };
+                let (tg, pn) = wrc_host_tests::tang::from_norm(&sol);
+                let half = exact::norm_half_lengths(&sol);
+                (tg, pn, nf, half, Some(sol.converged))
+            }
+            Normal::Stripes | Normal::Strips => return Err(
+                "--normal stripes|strips needs a wheel/rail gap; elliptic cases use hertz or norm"
+                    .into(),
+            ),
+        };
     let ep = exact::solve(
         grid,
         &pn,

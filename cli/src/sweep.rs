@@ -1,7 +1,7 @@
 //! `wrc sweep`: the lateral-shift sweep of An et al. (2019) with all six simplified models
 //! (FASTSIM and FaStrip × Kik–Piotrowski, Linder, Ayasse–Chollet) on the kernel's STRIPES pressure.
 
-use crate::args::{Flex, Normal, SolveArgs, SweepArgs, Tangential};
+use crate::args::{Common, Flex, Normal, SolveArgs, SweepArgs, Tangential};
 use crate::doc::Document;
 use crate::wheelrail;
 use serde_json::json;
@@ -83,7 +83,12 @@ pub fn solve_args(
         fn_n: None,
         approach: None,
         wr,
-        common: a.common.clone(),
+        // the sweep's default normal model is STRIPES (many states; the strip model, `wrc
+        // solve`'s default, takes 0.1–0.5 s per patch): `--normal strips` asks for it
+        common: Common {
+            normal: Some(a.common.normal.unwrap_or(Normal::Stripes)),
+            ..a.common.clone()
+        },
         json: a.json,
         plot: None,
         plot_reference: false,

@@ -160,11 +160,11 @@ pub fn check_solve(a: &SolveArgs) -> Result<(), String> {
         within("yaw", a.wr.yaw, -100.0, 100.0, " mrad")?;
         if c.tangential != Tangential::Exact {
             match c.normal.unwrap_or(Normal::Stripes) {
-                Normal::Stripes => {
+                Normal::Stripes | Normal::Strips => {
                     if !(8..=32).contains(&c.strips) {
                         return Err(format!(
                             "--strips {} is out of range: accepted 8..=32 (per region) for \
-                             wheel/rail cases on STRIPES",
+                             wheel/rail cases on STRIPES or the strip model",
                             c.strips
                         ));
                     }

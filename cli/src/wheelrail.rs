@@ -14,10 +14,13 @@ use wrc_host_tests::profiles::{
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::geometry::{Side, TrackSetup, WheelRail, WheelsetPose};
 use wrc_kernel::patch::{CellOut, CellSink, Creepage};
-use wrc_kernel::pipeline::solve_patch;
+use wrc_kernel::pipeline::{solve_patch, solve_patch_strip_model};
 use wrc_kernel::profile::{ProfileKind, ProfileTable};
+use wrc_kernel::ritz::{RitzConfig, RitzStrips};
 use wrc_kernel::stripes::StripSample;
-use wrc_kernel::wheel::{solve_wheel, WheelConfig, WheelSink, WheelWorkspace};
+use wrc_kernel::wheel::{
+    solve_wheel, solve_wheel_strip_model, WheelConfig, WheelSink, WheelWorkspace,
+};
 use wrc_kernel::{Material, Real};
 
 /// Profile capacity (nodes) of the command line.
@@ -250,8 +253,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     if cm.tangential == Tangential::Exact {
         return solve_exact(args, keep);
     }
-    match cm.normal.unwrap_or(Normal::Stripes) {
-        Normal::Stripes => {}
+    let strip_model = args.normal() == Normal::Strips;
+    match args.normal() {
+        Normal::Stripes | Normal::Strips => {}
         Normal::Norm => return crate::wr_reference::solve_norm::<T>(args, keep),
         Normal::Hertz => return crate::wr_reference::solve_hertz::<T, C>(args, keep),
     }
@@ -278,10 +282,19 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     };
     cfg.pipeline.adapt = adaptation(cm.flex);
     let mut ws = Box::new(Ws::<T, C>::new());
+    let mut rz = Box::new(RitzStrips::<T, RITZ_STRIPS>::new());
+    let rcfg = RitzConfig::recommended();
     let fz = t(args.wr.fz);
-    let time_us = median_time_us(|| {
-        let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
-    });
+    let time_us = if strip_model {
+        // one run: the strip model takes 0.1–0.5 s per patch
+        let s = std::time::Instant::now();
+        let _ = solve_wheel_strip_model(&geom, fz, &mat, &cfg, &rcfg, &mut ws, &mut rz, &mut ());
+        s.elapsed().as_secs_f64() * 1e6
+    } else {
+        median_time_us(|| {
+            let _ = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut ());
+        })
+    };
     let mut stats = Stats {
         patch: 0,
         keep,
@@ -292,9 +305,19 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
         last: None,
         cell_dx: 0.0,
     };
-    let res = solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut stats).map_err(|e| e.to_string())?;
+    let res = if strip_model {
+        solve_wheel_strip_model(&geom, fz, &mat, &cfg, &rcfg, &mut ws, &mut rz, &mut stats)
+    } else {
+        solve_wheel(&geom, fz, &mat, &cfg, &mut ws, &mut stats)
+    }
+    .map_err(|e| e.to_string())?;
     let mut warnings = vec![];
-    let per_patch = patch_strips(&res, &mat, &cfg, &mut ws, &mut warnings)?;
+    let rzm = if strip_model {
+        Some((&mut *rz, &rcfg))
+    } else {
+        None
+    };
+    let per_patch = patch_strips(&res, &mat, &cfg, &mut ws, rzm, &mut warnings)?;
     let mut patches = vec![];
     for (k, (p, (strips, y0))) in res.patches.iter().zip(per_patch).enumerate() {
         let st = stats.per.get(k).cloned().unwrap_or_default();
@@ -381,6 +404,9 @@ pub fn solve<T: Real, const C: usize>(args: &SolveArgs, keep: bool) -> Result<So
     })
 }
 
+/// Strip capacity of the strip model (`--normal strips`).
+const RITZ_STRIPS: usize = 160;
+
 /// The kernel's wheel workspace of the command line (`C` cells per strip).
 type Ws<T, const C: usize> = WheelWorkspace<T, 4, 128, 256, 4, 32, C, 128>;
 
@@ -388,10 +414,11 @@ type Ws<T, const C: usize> = WheelWorkspace<T, 4, 128, 256, 4, 32, C, 128>;
 type PatchStrips = (Vec<StripOut>, Vec<Y0Cell>);
 
 /// `strips` and `y0` of every patch of `res`: each patch is run once more through the kernel's
-/// pipeline (`wrc_kernel::pipeline::solve_patch`, the computation of the wheel solve's final
+/// pipeline (`wrc_kernel::pipeline::solve_patch`, with `--normal strips`
+/// `solve_patch_strip_model`: the computation of the wheel solve's final
 /// solve of that patch, on its geometry samples, load and creepages that `ws` and `res` hold),
-/// into a detailed sink; then the workspace holds that patch's STRIPES strips (centre y_j,
-/// half-length a_j, strip load stiffness·h_j·δy_j) and its per-strip KTH wear, and the sink the
+/// into a detailed sink; then the workspace holds that patch's strips (centre y_j,
+/// half-length a_j, strip load (π/2) p̂_j a_j δy_j) and its per-strip KTH wear, and the sink the
 /// per-strip totals of the cells (F_x, F_y) and the cells of the strip through y = 0. A re-run
 /// whose totals differ from the wheel solve's (not expected) and a patch in the neck blend (whose
 /// totals and wear are a blend of two strip layouts while the strips are the dominant layout's)
@@ -401,6 +428,7 @@ fn patch_strips<T: Real, const C: usize>(
     mat: &Material<T>,
     cfg: &WheelConfig<T>,
     ws: &mut Ws<T, C>,
+    mut strip_model: Option<(&mut RitzStrips<T, RITZ_STRIPS>, &RitzConfig<T>)>,
     warnings: &mut Vec<String>,
 ) -> Result<Vec<PatchStrips>, String> {
     let mut out = vec![];
@@ -431,15 +459,28 @@ fn patch_strips<T: Real, const C: usize>(
             false,
         )
         .detailed();
-        let r = solve_patch(
-            &samples,
-            p.load,
-            &p.creepage,
-            mat,
-            &cfg.pipeline,
-            &mut ws.pipeline,
-            &mut sink,
-        )
+        let r = match strip_model.as_mut() {
+            Some((rz, rcfg)) => solve_patch_strip_model(
+                &samples,
+                p.load,
+                &p.creepage,
+                mat,
+                &cfg.pipeline,
+                rcfg,
+                &mut ws.pipeline,
+                rz,
+                &mut sink,
+            ),
+            None => solve_patch(
+                &samples,
+                p.load,
+                &p.creepage,
+                mat,
+                &cfg.pipeline,
+                &mut ws.pipeline,
+                &mut sink,
+            ),
+        }
         .map_err(|e| format!("patch {m}: {e}"))?;
         if r.totals != p.result.totals {
             warnings.push(format!(
@@ -456,7 +497,10 @@ fn patch_strips<T: Real, const C: usize>(
                         y_mm: set.y[j].to_f64(),
                         half_length_mm: set.a[j].to_f64(),
                         width_mm: set.dy[j].to_f64(),
-                        fn_n: (set.stiffness[j] * set.h[j] * set.dy[j]).to_f64(),
+                        // (π/2) p̂_j a_j δy_j: the strip's semi-elliptic load (for STRIPES
+                        // equal to stiffness·h_j·δy_j)
+                        fn_n: (set.pmax[j] * set.a[j] * set.dy[j]).to_f64()
+                            * std::f64::consts::FRAC_PI_2,
                         fx_n: t.fx.to_f64(),
                         fy_n: t.fy.to_f64(),
                         wear_depth_um: ws.pipeline.wear.depth[j].to_f64() * 1e3,

@@ -1003,6 +1003,7 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
         let rt = json(&[
             "solve", "--table", ts, "--dy", dy, "--fz", "83300", "--json",
         ]);
+        // the converged solve on STRIPES, whose strips the table holds
         let cv = json(&[
             "solve",
             "--back-to-back",
@@ -1011,6 +1012,8 @@ fn table_then_realtime_solve_matches_the_converged_solve() {
             dy,
             "--fz",
             "83300",
+            "--normal",
+            "stripes",
             "--json",
         ]);
         assert_eq!(rt["status"]["path"], "realtime");
@@ -1305,6 +1308,7 @@ fn strips_and_y0_for_every_wheel_rail_model() {
     let base = ["solve", "--dy", "2", "--fz", "80000", "--json"];
     for extra in [
         &["--tangential", "fastsim"][..],
+        &["--tangential", "fastsim", "--normal", "stripes"][..],
         &["--tangential", "fastrip", "--flex", "kp"][..],
         &["--tangential", "fastrip", "--normal", "norm"][..],
         &[
@@ -1332,11 +1336,15 @@ fn strips_and_y0_for_every_wheel_rail_model() {
             "{what}: {d}"
         );
     }
-    // a flange case with two regions (64 strips): still summing
-    let mut a = base.to_vec();
-    a[2] = "5";
-    let d = json(&a);
-    check_strips(&d["patches"][0], "dy 5");
+    // a flange case with two regions (64 strips): still summing, on both normal models
+    for normal in ["strips", "stripes"] {
+        let mut a = base.to_vec();
+        a[2] = "5";
+        a.extend(["--normal", normal]);
+        let d = json(&a);
+        assert_eq!(d["inputs"]["normal"], normal);
+        check_strips(&d["patches"][0], &format!("dy 5, {normal}"));
+    }
 }
 
 /// The legend name of the exact reference in y0.svg and strips.svg (`--plot-reference`).
@@ -1456,7 +1464,7 @@ fn plots_of_y0_and_strips_beside_the_reference_for_a_wheel_rail_case() {
             "{}",
             doc["status"]
         );
-        check_profile_plots(&dir, "fastrip-ac on stripes", reference);
+        check_profile_plots(&dir, "fastrip-ac on strips", reference);
         docs.push(doc);
     }
     assert_eq!(docs[1]["inputs"]["tangential"], "fastrip");

@@ -34,7 +34,10 @@ use crate::wear_ref::{self, WearMap as RefWearMap};
 use crate::wheelrail::{tangential_on_norm, PatchCase};
 use wrc_kernel::adapt::{AcFlexLength, Adaptation, KpBeta, Method};
 use wrc_kernel::patch::{CellOut, CellSink};
-use wrc_kernel::pipeline::{solve_patch, DefaultWorkspace, PipelineConfig};
+use wrc_kernel::pipeline::{
+    solve_patch, solve_patch_strip_model, DefaultWorkspace, PipelineConfig,
+};
+use wrc_kernel::ritz::{RitzConfig, RitzStrips};
 use wrc_kernel::{Error, Material};
 
 pub use crate::wheelrail::{NORM_CELLS, NORM_STRIPS};
@@ -199,20 +202,51 @@ pub fn on_stripes(
     mu: f64,
     speed: f64,
 ) -> Result<Run, Error> {
+    on_kernel(pc, model, mat, mu, speed, false)
+}
+
+/// Strip capacity of the strip-model runs ([`on_kernel`]).
+pub const STRIP_MODEL_STRIPS: usize = 160;
+
+/// A model on the kernel's pressure: STRIPES (`strip_model` false, = [`on_stripes`]) or the
+/// strip model after it (`pipeline::solve_patch_strip_model`, `RitzConfig::recommended`).
+pub fn on_kernel(
+    pc: &PatchCase,
+    model: Model,
+    mat: &Material<f64>,
+    mu: f64,
+    speed: f64,
+    strip_model: bool,
+) -> Result<Run, Error> {
     let mut cfg = PipelineConfig::recommended(mu, speed);
     cfg.adapt = model.approach.adaptation();
     cfg.method = model.method;
     let mut ws = Box::new(DefaultWorkspace::<f64>::new());
     let mut sink = Cells(vec![]);
-    let r = solve_patch(
-        &pc.stripes_samples,
-        pc.load,
-        &pc.creepage,
-        mat,
-        &cfg,
-        &mut ws,
-        &mut sink,
-    )?;
+    let r = if strip_model {
+        let mut rz = Box::new(RitzStrips::<f64, STRIP_MODEL_STRIPS>::new());
+        solve_patch_strip_model(
+            &pc.stripes_samples,
+            pc.load,
+            &pc.creepage,
+            mat,
+            &cfg,
+            &RitzConfig::recommended(),
+            &mut ws,
+            &mut rz,
+            &mut sink,
+        )?
+    } else {
+        solve_patch(
+            &pc.stripes_samples,
+            pc.load,
+            &pc.creepage,
+            mat,
+            &cfg,
+            &mut ws,
+            &mut sink,
+        )?
+    };
     let mut wear: Vec<(f64, f64)> = (0..ws.set.n_strips)
         .map(|j| (ws.set.y[j], ws.wear.depth[j]))
         .collect();

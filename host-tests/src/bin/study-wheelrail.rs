@@ -7,7 +7,8 @@
 //! Run: `cargo run --release -p wrc-host-tests --bin study-wheelrail [-- options]`
 //!
 //! Options: `--quick` (83.3 kN only, no Manchester rows), `--no-mbench`, `--threads T` (2),
-//! `--out DIR` (`out/wheelrail`).
+//! `--out DIR` (`out/wheelrail`), `--normal strips` (the kernel's pressure from the strip model,
+//! `wrc_kernel::ritz`, instead of STRIPES; the tables keep the label "STRIPES" for the kernel's).
 //!
 //! Writes `DIR/tangential.csv` (one row per patch: reference and every model on both pressures,
 //! forces normalised by μF_n and M_z by μF_n c, wear-profile errors), `DIR/y0_dy{0,-2,6}.csv` and
@@ -19,7 +20,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 use wrc_host_tests::tangstudy::{
-    on_norm, on_stripes, reference, wear_error, CellRec, Compared, Measures, Run, WearCmp, MODELS,
+    on_kernel, on_norm, reference, wear_error, CellRec, Compared, Measures, Run, WearCmp, MODELS,
 };
 use wrc_host_tests::wheelrail::{
     mbench_material, mbench_rows, solve_mbench_row, solve_sweep_case, sweep_cases, tables,
@@ -105,7 +106,7 @@ fn compare(
                     )
                 })
             };
-            let a = run(on_stripes(pc, m, mat, mu, speed))?;
+            let a = run(on_kernel(pc, m, mat, mu, speed, strip_model()))?;
             let b = run(on_norm(pc, m, mat, mu, speed))?;
             models.push((
                 Compared::new(&a, &ex, mu, area),
@@ -125,7 +126,7 @@ fn compare(
             )];
             for m in MODELS {
                 for (pname, r) in [
-                    ("STRIPES", on_stripes(pc, m, mat, mu, v)),
+                    ("STRIPES", on_kernel(pc, m, mat, mu, v, strip_model())),
                     ("NORM", on_norm(pc, m, mat, mu, v)),
                 ] {
                     let r = r.map_err(|e| format!("{label} patch {k} {}: {e}", m.name()))?;
@@ -158,6 +159,13 @@ fn compare(
     Ok(out)
 }
 
+/// `--normal strips`: the kernel's pressure from the strip model (`ritz`) instead of STRIPES.
+static STRIP_MODEL: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+fn strip_model() -> bool {
+    STRIP_MODEL.load(Ordering::Relaxed)
+}
+
 fn main() {
     let mut quick = false;
     let mut mbench = true;
@@ -179,6 +187,14 @@ fn main() {
             "--out" => {
                 k += 1;
                 out = args[k].clone();
+            }
+            "--normal" => {
+                k += 1;
+                match args[k].as_str() {
+                    "stripes" => STRIP_MODEL.store(false, Ordering::Relaxed),
+                    "strips" => STRIP_MODEL.store(true, Ordering::Relaxed),
+                    o => panic!("--normal stripes|strips, not {o}"),
+                }
             }
             o => panic!("unknown option {o} (see the module docs)"),
         }

@@ -2042,4 +2042,33 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         Ok(())
     }
+
+    /// The last solve's local quantities at lateral position `y` (linear between samples,
+    /// clamped at the ends): (B_f, n/m, Ã, strip stiffness). `i` is the bracket search start
+    /// (samples ascending; pass 0 or the previous call's value for ascending `y`).
+    pub(crate) fn local_at(&self, y: T, i: &mut usize) -> (T, T, T, T) {
+        let n = self.n;
+        if n < 2 {
+            return (T::ZERO, T::ONE, T::ZERO, T::ZERO);
+        }
+        if *i + 1 >= n || self.y[*i] > y {
+            *i = 0;
+        }
+        while *i + 2 < n && self.y[*i + 1] < y {
+            *i += 1;
+        }
+        let (i0, i1) = (*i, *i + 1);
+        let t = math::clamp(
+            (y - self.y[i0]) / (self.y[i1] - self.y[i0]),
+            T::ZERO,
+            T::ONE,
+        );
+        let lerp = |v: &[T; NS]| v[i0] + t * (v[i1] - v[i0]);
+        (
+            lerp(&self.bf),
+            lerp(&self.nm),
+            lerp(&self.at),
+            lerp(&self.kst),
+        )
+    }
 }

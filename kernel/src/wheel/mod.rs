@@ -204,7 +204,11 @@ use crate::geometry::{
 };
 use crate::math;
 use crate::patch::{CellOut, CellSink, Creepage};
-use crate::pipeline::{solve_patch, solve_patch_forces, PatchResult, PipelineConfig, Workspace};
+use crate::pipeline::{
+    solve_patch, solve_patch_forces, solve_patch_strip_model, PatchResult, PipelineConfig,
+    Workspace,
+};
+use crate::ritz::{RitzConfig, RitzStrips};
 use crate::stripes::StripSample;
 use crate::{Material, Real};
 
@@ -1015,6 +1019,75 @@ pub fn solve_wheel<
 ) -> Result<WheelResult<T, K, NR>, Error> {
     check_positive(fz, "fz")?;
     solve(geom, Target::Vertical(fz), mat, cfg, ws, None, sink)
+}
+
+/// [`solve_wheel`] with the strip model ([`crate::ritz`]) as the final normal solve of every
+/// patch: the load split, the approach and the normal–tangential coupling are
+/// [`solve_wheel`]'s (STRIPES), then each patch is solved again at its load and creepages by
+/// [`crate::pipeline::solve_patch_strip_model`] on the caller's `rz` (capacity `RN` strips),
+/// whose cells go to `sink` and whose result replaces the patch's. `converged` also requires
+/// every strip-model solve to converge.
+///
+/// Why only the final solve: the strip model costs 0.1–0.5 s per patch on the host (STRIPES
+/// 0.1 ms) and moves a patch's approach by a few per cent at most, so the load split of
+/// STRIPES is kept; what it changes is the distribution of the load over the patch (pmax and
+/// area against NORM: module docs of [`crate::ritz`]).
+///
+/// Errors: as [`solve_wheel`] and [`crate::pipeline::solve_patch_strip_model`].
+#[allow(clippy::too_many_arguments)]
+pub fn solve_wheel_strip_model<
+    T: Real,
+    W: WheelSink<T>,
+    const N: usize,
+    const M: usize,
+    const K: usize,
+    const NP: usize,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+    const RN: usize,
+>(
+    geom: &WheelRail<'_, T, N, M>,
+    fz: T,
+    mat: &Material<T>,
+    cfg: &WheelConfig<T>,
+    rcfg: &RitzConfig<T>,
+    ws: &mut WheelWorkspace<T, K, NP, NS, NR, S, C, SS>,
+    rz: &mut RitzStrips<T, RN>,
+    sink: &mut W,
+) -> Result<WheelResult<T, K, NR>, Error> {
+    let mut res = solve_wheel(geom, fz, mat, cfg, ws, &mut ())?;
+    // the result's patches are the geometry's patches with a positive load, in order
+    let np = ws.patches.len.min(K);
+    let mut out = 0usize;
+    for k in 0..np {
+        if !(ws.loads[k] > T::ZERO) {
+            continue;
+        }
+        let Some(wp) = res.patches.get(out) else {
+            break;
+        };
+        let (load, cr) = (wp.load, wp.creepage);
+        let n = samples_of(&ws.patches, k, &mut ws.samples);
+        sink.begin_patch(out);
+        let r = solve_patch_strip_model(
+            &ws.samples[..n],
+            load,
+            &cr,
+            mat,
+            &cfg.pipeline,
+            rcfg,
+            &mut ws.pipeline,
+            rz,
+            &mut Forward(sink),
+        )?;
+        res.converged &= r.converged;
+        res.patches[out].result = r;
+        out += 1;
+    }
+    Ok(res)
 }
 
 /// [`solve_wheel`] warm-started from `state`, the solution the previous call of this wheel left

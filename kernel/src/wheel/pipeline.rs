@@ -27,6 +27,7 @@ use crate::adapt::{self, Adaptation, LocalEllipse, Method};
 use crate::error::{check_positive, Error};
 use crate::math::{self, c};
 use crate::patch::{CellOut, CellSink, Creepage, SemiEllipticStrips, Totals, TractionBound};
+use crate::ritz::{RitzConfig, RitzStrips};
 use crate::stripes::{StripSample, StripSet, Stripes, StripesConfig, StripesSolution};
 use crate::wear::{StripWear, WearMap};
 use crate::{Material, Real};
@@ -293,6 +294,55 @@ pub fn solve_patch_forces<
     solve_patch_impl::<T, (), NS, NR, S, C, SS, false>(samples, load, cr, mat, cfg, ws, &mut ())
 }
 
+/// [`solve_patch`] with the strip model ([`crate::ritz`]) as the normal solve: STRIPES first
+/// (its contact set, approach and local Hertz quantities start the strip model), then the strip
+/// model's loads and half-lengths on the caller's `rz` (capacity `RN` strips), laid out on the
+/// pipeline's strips ([`RitzStrips::layout`]) for the adaptation, the tangential solve and the
+/// wear. `PatchResult::approach` is the strip model's, `iterations` adds its active-set steps.
+/// No neck blend: the strip model's load varies continuously across a neck.
+///
+/// Errors: those of [`solve_patch`] and of [`RitzStrips::solve`] / [`RitzStrips::layout`].
+#[inline(never)]
+#[allow(clippy::too_many_arguments)]
+pub fn solve_patch_strip_model<
+    T: Real,
+    K: CellSink<T>,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+    const RN: usize,
+>(
+    samples: &[StripSample<T>],
+    load: T,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    rcfg: &RitzConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    rz: &mut RitzStrips<T, RN>,
+    sink: &mut K,
+) -> Result<PatchResult<T, NR>, Error> {
+    check_positive(cfg.mu, "mu")?;
+    check_positive(cfg.speed, "speed")?;
+    cr.check()?;
+    cfg.wear.validate()?;
+    let sol: StripesSolution<T, NR> = ws.stripes.solve(samples, load, mat, &cfg.stripes)?;
+    let rs = rz.solve(samples, &ws.stripes, &sol, load, mat, rcfg)?;
+    let per = cfg.strips_per_region.min(S);
+    rz.layout(samples, &ws.stripes, &rs, per, &mut ws.set)?;
+    tangential_on_set::<T, K, NS, NR, S, C, SS, true>(
+        sol.iterations,
+        sol.converged,
+        cr,
+        mat,
+        cfg,
+        ws,
+        sink,
+    )
+}
+
 #[allow(clippy::too_many_arguments)]
 #[inline(always)]
 fn solve_patch_impl<
@@ -555,6 +605,38 @@ fn layout_and_tangential<
 ) -> Result<PatchResult<T, NR>, Error> {
     let per = cfg.strips_per_region.min(S);
     ws.stripes.layout(sol, samples, load, per, &mut ws.set)?;
+    tangential_on_set::<T, K, NS, NR, S, C, SS, WEAR>(
+        sol.iterations,
+        sol.converged,
+        cr,
+        mat,
+        cfg,
+        ws,
+        sink,
+    )
+}
+
+/// Adaptation, tangential solve and wear (if `WEAR`) per region of the strips in `ws.set`;
+/// `iterations`/`converged` of the normal solve that produced them are added to the set's own.
+#[allow(clippy::too_many_arguments)]
+fn tangential_on_set<
+    T: Real,
+    K: CellSink<T>,
+    const NS: usize,
+    const NR: usize,
+    const S: usize,
+    const C: usize,
+    const SS: usize,
+    const WEAR: bool,
+>(
+    iterations: u32,
+    converged: bool,
+    cr: &Creepage<T>,
+    mat: &Material<T>,
+    cfg: &PipelineConfig<T>,
+    ws: &mut Workspace<T, NS, NR, S, C, SS>,
+    sink: &mut K,
+) -> Result<PatchResult<T, NR>, Error> {
     ws.wear.clear();
     let bound = cfg.bound.unwrap_or(cfg.adapt.default_bound());
     let mut res = PatchResult {
@@ -563,8 +645,8 @@ fn layout_and_tangential<
         approach: ws.set.delta,
         area: ws.set.total_area,
         pmax: ws.set.total_pmax,
-        iterations: sol.iterations + ws.set.iterations,
-        converged: sol.converged && ws.set.converged,
+        iterations: iterations + ws.set.iterations,
+        converged: converged && ws.set.converged,
     };
     for r in 0..ws.set.n_regions {
         let reg = ws.set.regions[r];
