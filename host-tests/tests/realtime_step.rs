@@ -617,8 +617,9 @@ struct StripJump {
 
 /// Walks `pose_at(u)` at the load `fz_at(u)` for u = 0 … `n` in unit steps: no step of the total
 /// force may move it by more than 0.5 % of μF_z (F_z at the step's start) unless it is a steep
-/// stretch, not a jump: such a step is cut in 10 and every part checked the same way, down to 10⁻⁴ of a step (a jump stays a jump
-/// however fine the cut; a steep continuous stretch falls below 0.5 %). At a jump the table's
+/// stretch, not a jump: such a step is cut in 10 and every part checked the same way, down to
+/// 10⁻⁴ of a step (a jump stays a jump however fine the cut; a steep continuous stretch falls
+/// below 0.5 %). At a jump the table's
 /// part is checked alone: the step at μ = 10⁻⁹ (creep forces nil, so the vertical balance and
 /// everything the table gives depend on the pose only) must be continuous there (load, frame,
 /// creepages, pmax, area within 10⁻⁴); then the jump is returned as the strip forces' (the

@@ -20,9 +20,9 @@
 //! 3. **Slots at F**: every slot's frame turned by the roll relative to the node's (contact
 //!    angle ∓Δθ, the wheel's arm to the contact about the axle, the rail point along the rail),
 //!    yaw's effect on the gap added as k ψ² to the contact angle, load share, rolling radius,
-//!    pmax and area ([`crate::table`] "Yaw"; also in step 2), load N_k = s_k F and its `ST` strips (a_j, p̂_j scaled by F^{1/3}, p̂
-//!    rescaled so the strips carry N_k exactly, Kalker's C_ij at the local ellipse n_j/m_j:
-//!    Ayasse–Chollet).
+//!    pmax and area ([`crate::table`] "Yaw"; also in step 2), load N_k = s_k F and its `ST`
+//!    strips (a_j, p̂_j scaled by F^{1/3}, p̂ rescaled so the strips carry N_k exactly,
+//!    Kalker's C_ij at the local ellipse n_j/m_j: Ayasse–Chollet).
 //! 4. **Creepages** from the kinematics at each slot's frame ([`creepages_trig`]), the frame's
 //!    reference point moved along x by the pose's yaw (first order; the table is built at yaw 0).
 //!    Contact angle, yaw and roll enter through their sines and cosines by series
