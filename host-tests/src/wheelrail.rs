@@ -997,6 +997,19 @@ pub fn tangential_on_norm<T: Real, K: CellSink<T>>(
     Ok((out, sinks))
 }
 
+/// The band's cases in table order (load, then shift): 1360 mm, right wheel, dy = 4.05…4.95 mm
+/// by 0.05 mm, at each of [`SWEEP_LOADS`].
+pub fn band_cases(w: &Table, r: &Table) -> Vec<SweepCase> {
+    let mut v = vec![];
+    for load in SWEEP_LOADS {
+        for k in 1..20 {
+            let dy = 4.0 + 0.05 * k as f64;
+            v.push(sweep_case(w, r, Side::Right, 1360.0, dy, load).unwrap());
+        }
+    }
+    v
+}
+
 /// [`solve_case`] for a sweep case (steel, the sweep's configuration).
 pub fn solve_sweep_case(
     wheel: &Table,

@@ -136,17 +136,6 @@ fn report(name: &str, rows: &[Row], txt: &mut String) -> [(f64, f64, usize); 4] 
     s
 }
 
-fn band_cases(w: &Table, r: &Table) -> Vec<SweepCase> {
-    let mut v = vec![];
-    for load in SWEEP_LOADS {
-        for k in 1..20 {
-            let dy = 4.0 + 0.05 * k as f64;
-            v.push(sweep_case(w, r, wrc_kernel::geometry::Side::Right, 1360.0, dy, load).unwrap());
-        }
-    }
-    v
-}
-
 /// The strip model against NORM on the issue-17 sets, per wheel. Asserted (issue 17 targets):
 /// mean |Δpmax| and mean |Δarea| ≤ 3 % on every set, every case within 10 %, every solve
 /// converged. The transition shifts are checked against NORM at 0.1 mm elements: their small

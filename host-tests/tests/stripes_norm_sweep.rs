@@ -323,19 +323,6 @@ fn norm_region_loads(p: &PatchCase) -> Vec<f64> {
         .collect()
 }
 
-/// The band's cases in table order (load, then shift): 1360 mm, right wheel, dy = 4.05…4.95 mm
-/// by 0.05 mm, at each of [`SWEEP_LOADS`].
-fn band_cases(w: &Table, r: &Table) -> Vec<SweepCase> {
-    let mut v = vec![];
-    for load in SWEEP_LOADS {
-        for k in 1..20 {
-            let dy = 4.0 + 0.05 * k as f64;
-            v.push(sweep_case(w, r, wrc_kernel::geometry::Side::Right, 1360.0, dy, load).unwrap());
-        }
-    }
-    v
-}
-
 /// Known issue-6 misses on the band with the default (per wheel, |Δpmax| > 20 %). Empty since
 /// the default has `StripesConfig::merge_depth` 0.25 and the inter-region coupling (2026-12-02);
 /// before, ten cases missed: STRIPES merged the basins across the concave valley between tread

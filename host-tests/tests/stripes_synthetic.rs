@@ -1,6 +1,7 @@
 //! STRIPES (kernel/src/normal/stripes.rs) on synthetic gaps: Hertz exactness, load control, regions and
 //! continuity of forces, pmax and area in the lateral shift (0.01 mm steps).
 
+use wrc_host_tests::cases::hertz_gap;
 use wrc_kernel::hertz;
 use wrc_kernel::stripes::{
     HMode, L0Mode, StripSample, StripSet, Stripes, StripesConfig, StripesSolution,
@@ -34,23 +35,6 @@ fn all_configs() -> Vec<(&'static str, StripesConfig<f64>)> {
         }
     }
     v
-}
-
-fn hertz_gap(ca: f64, cb: f64, half: f64, dy: f64) -> Vec<StripSample<f64>> {
-    let n = (2.0 * half / dy).round() as usize;
-    (0..n)
-        .map(|i| {
-            let y = -half + (i as f64 + 0.5) * dy;
-            StripSample {
-                y,
-                dy,
-                z: cb * y * y + 0.3,
-                curv_a: ca,
-                curv_b: cb,
-                xc: 0.0,
-            }
-        })
-        .collect()
 }
 
 #[test]

@@ -324,10 +324,7 @@ pub fn solve_patch_strip_model<
     rz: &mut RitzStrips<T, RN>,
     sink: &mut K,
 ) -> Result<PatchResult<T, NR>, Error> {
-    check_positive(cfg.mu, "mu")?;
-    check_positive(cfg.speed, "speed")?;
-    cr.check()?;
-    cfg.wear.validate()?;
+    check_inputs(cfg, cr)?;
     let sol: StripesSolution<T, NR> = ws.stripes.solve(samples, load, mat, &cfg.stripes)?;
     let rs = rz.solve(samples, &ws.stripes, &sol, load, mat, rcfg)?;
     let per = cfg.strips_per_region.min(S);
@@ -363,10 +360,7 @@ fn solve_patch_impl<
     ws: &mut Workspace<T, NS, NR, S, C, SS>,
     sink: &mut K,
 ) -> Result<PatchResult<T, NR>, Error> {
-    check_positive(cfg.mu, "mu")?;
-    check_positive(cfg.speed, "speed")?;
-    cr.check()?;
-    cfg.wear.validate()?;
+    check_inputs(cfg, cr)?;
     let sol: StripesSolution<T, NR> = ws.stripes.solve(samples, load, mat, &cfg.stripes)?;
     // Neck blend (continuity where regions merge or split, see `neck`): near a neck the patch is
     // solved on both layouts, the one with the larger weight last and with the caller's sink.
@@ -415,6 +409,15 @@ fn solve_patch_impl<
     layout_and_tangential::<T, _, NS, NR, S, C, SS, WEAR>(
         &sol, samples, load, cr, mat, cfg, ws, sink,
     )
+}
+
+/// The per-patch inputs both solves check before STRIPES: μ and speed positive, finite
+/// creepages, a valid wear map.
+fn check_inputs<T: Real>(cfg: &PipelineConfig<T>, cr: &Creepage<T>) -> Result<(), Error> {
+    check_positive(cfg.mu, "mu")?;
+    check_positive(cfg.speed, "speed")?;
+    cr.check()?;
+    cfg.wear.validate()
 }
 
 /// Below this neck ratio r = h_neck / min(left peak, right peak) of the fine solution's strip
