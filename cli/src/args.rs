@@ -34,7 +34,7 @@ pub enum Normal {
     /// STRIPES semi-Hertzian (kernel default for wheel/rail cases).
     Stripes,
     /// The strip model: STRIPES, then its strips' loads and half-lengths from the elastic
-    /// half-space (`wrc_kernel::ritz`; wheel/rail cases, 0.1–0.5 s per patch).
+    /// half-space (`wrc_kernel::ritz`; wheel/rail cases, 0.1–1 s per patch).
     Strips,
     /// One Hertz ellipse (kernel default for elliptic cases).
     Hertz,

@@ -84,7 +84,7 @@ pub fn solve_args(
         approach: None,
         wr,
         // the sweep's default normal model is STRIPES (many states; the strip model, `wrc
-        // solve`'s default, takes 0.1–0.5 s per patch): `--normal strips` asks for it
+        // solve`'s default, takes 0.1–1 s per patch): `--normal strips` asks for it
         common: Common {
             normal: Some(a.common.normal.unwrap_or(Normal::Stripes)),
             ..a.common.clone()

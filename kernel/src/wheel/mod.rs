@@ -1028,10 +1028,12 @@ pub fn solve_wheel<
 /// whose cells go to `sink` and whose result replaces the patch's. `converged` also requires
 /// every strip-model solve to converge.
 ///
-/// Why only the final solve: the strip model costs 0.1–0.5 s per patch on the host (STRIPES
-/// 0.1 ms) and moves a patch's approach by a few per cent at most, so the load split of
-/// STRIPES is kept; what it changes is the distribution of the load over the patch (pmax and
-/// area against NORM: module docs of [`crate::ritz`]).
+/// Why only the final solve: the strip model costs 0.1–1 s per patch on the host (STRIPES'
+/// pipeline ≈ 0.3 ms), and what it is for is the distribution of each patch's load (pmax and
+/// area against NORM: module docs of [`crate::ritz`]). The load split and the vertical approach
+/// stay STRIPES'; each patch's `result.approach` is the strip model's, which can differ from
+/// STRIPES' (by more than 20 % on the wide two-basin gap of `tests/ritz_hertz.rs`), so a split driven by
+/// it could move load between patches — not yet measured.
 ///
 /// Errors: as [`solve_wheel`] and [`crate::pipeline::solve_patch_strip_model`].
 #[allow(clippy::too_many_arguments)]
