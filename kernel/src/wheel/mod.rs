@@ -1032,8 +1032,8 @@ pub fn solve_wheel<
 /// pipeline ≈ 0.3 ms), and what it is for is the distribution of each patch's load (pmax and
 /// area against NORM: module docs of [`crate::ritz`]). The load split and the vertical approach
 /// stay STRIPES'; each patch's `result.approach` is the strip model's, which can differ from
-/// STRIPES' (by more than 20 % on the wide two-basin gap of `tests/ritz_hertz.rs`), so a split driven by
-/// it could move load between patches — not yet measured.
+/// STRIPES' (by more than 20 % on the wide two-basin gap of `tests/ritz_hertz.rs`), so a split
+/// driven by it could move load between patches — not yet measured.
 ///
 /// Errors: as [`solve_wheel`] and [`crate::pipeline::solve_patch_strip_model`].
 #[allow(clippy::too_many_arguments)]
