@@ -134,7 +134,7 @@ pub struct RitzStrips<T, const N: usize> {
     qn: [T; N],
     u: [T; N],
     v: [T; N],
-    row: [[T; N]; 3],
+    row: [[T; N]; 2],
     act: [bool; N],
     idx: [usize; N],
     k: [[T; N]; N],
@@ -158,7 +158,7 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
             qn: [T::ZERO; N],
             u: [T::ZERO; N],
             v: [T::ZERO; N],
-            row: [[T::ZERO; N]; 3],
+            row: [[T::ZERO; N]; 2],
             act: [false; N],
             idx: [0; N],
             k: [[T::ZERO; N]; N],
@@ -631,10 +631,15 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
         self.shape[k].y + T::HALF * self.shape[k].w
     }
 
-    /// h_i = f_i + A_i a_i²/4.
+    /// h_i = f_i + A_i a_i²/4 at the current half-length.
     #[inline]
     fn h(&self, i: usize) -> T {
-        let a = self.shape[i].a;
+        self.mean_gap(i, self.shape[i].a)
+    }
+
+    /// The semi-ellipse-weighted mean rigid gap f_i + A_i a²/4 of strip i at half-length `a`.
+    #[inline]
+    fn mean_gap(&self, i: usize, a: T) -> T {
         self.f[i] + self.ca[i] * a * a * c::<T>(0.25)
     }
 
@@ -815,7 +820,7 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
             }
             let mut si = self.shape[i];
             si.a *= f;
-            e += self.q[i] * (self.f[i] + self.ca[i] * si.a * si.a * c::<T>(0.25));
+            e += self.q[i] * self.mean_gap(i, si.a);
             for j in 0..n {
                 let loaded = self.q[j] > T::ZERO;
                 if !(store || loaded && j >= i) {
@@ -897,16 +902,16 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
         }
     }
 
-    /// Strip i's part of the energy with row `slot` at half-length `a`.
-    fn energy_i(&self, i: usize, a: T, slot: usize) -> T {
+    /// Strip i's part of the energy with K's row `row` at half-length `a`.
+    fn energy_i(&self, i: usize, a: T, row: &[T; N]) -> T {
         let qi = self.q[i];
-        let mut e = T::HALF * qi * qi * self.row[slot][i];
+        let mut e = T::HALF * qi * qi * row[i];
         for j in 0..self.n {
             if j != i && self.q[j] > T::ZERO {
-                e += qi * self.q[j] * self.row[slot][j];
+                e += qi * self.q[j] * row[j];
             }
         }
-        e + qi * (self.f[i] + self.ca[i] * a * a * c::<T>(0.25))
+        e + qi * self.mean_gap(i, a)
     }
 
     /// One Gauss–Seidel pass of damped Newton steps in ln a over the loaded strips (`only`:
@@ -919,16 +924,13 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
                 continue;
             }
             let a0 = self.shape[i].a;
-            for j in 0..n {
-                self.row[0][j] = self.k[i][j];
-            }
-            let e0 = self.energy_i(i, a0, 0);
+            let e0 = self.energy_i(i, a0, &self.k[i]);
             let am = a0 * math::exp(-eps);
             let ap = a0 * math::exp(eps);
-            self.eval_row(i, am, pe, 1, true);
-            let em = self.energy_i(i, am, 1);
-            self.eval_row(i, ap, pe, 2, true);
-            let ep = self.energy_i(i, ap, 2);
+            self.eval_row(i, am, pe, 0, true);
+            let em = self.energy_i(i, am, &self.row[0]);
+            self.eval_row(i, ap, pe, 1, true);
+            let ep = self.energy_i(i, ap, &self.row[1]);
             let g = (ep - em) / (T::TWO * eps);
             let hh = (ep - T::TWO * e0 + em) / (eps * eps);
             let max_step = c::<T>(MAX_STEP);
@@ -946,8 +948,8 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
             // the step, halved once if the energy rose; the rest of the row once accepted
             for _ in 0..2 {
                 let an = a0 * math::exp(step);
-                self.eval_row(i, an, pe, 1, true);
-                let en = self.energy_i(i, an, 1);
+                self.eval_row(i, an, pe, 0, true);
+                let en = self.energy_i(i, an, &self.row[0]);
                 if en < e0 {
                     self.shape[i].a = an;
                     let si = self.shape[i];
@@ -955,7 +957,7 @@ impl<T: Real, const N: usize> RitzStrips<T, N> {
                         let kij = if j != i && !(self.q[j] > T::ZERO) {
                             pair(&si, &self.shape[j]) / pe
                         } else {
-                            self.row[1][j]
+                            self.row[0][j]
                         };
                         self.k[i][j] = kij;
                         self.k[j][i] = kij;

@@ -1942,7 +1942,6 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         if per < MIN_STRIPS_PER_REGION {
             return Err(Error::GridTooSmall("strip capacity"));
         }
-        let n = self.n;
         let mut j = 0usize;
         for r in 0..nr {
             let reg = sol.regions[r];
@@ -1958,15 +1957,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             let mut i = 0usize; // bracket search start (samples ascending)
             for q in 0..per {
                 let y = reg.y_lo + (T::from_usize(q) + T::HALF) * dy;
-                while i + 2 < n && self.y[i + 1] < y {
-                    i += 1;
-                }
-                let (i0, i1) = (i, i + 1);
-                let t = math::clamp(
-                    (y - self.y[i0]) / (self.y[i1] - self.y[i0]),
-                    T::ZERO,
-                    T::ONE,
-                );
+                let (i0, i1, t) = self.bracket(y, &mut i);
                 let lerp = |v: &[T; NS]| v[i0] + t * (v[i1] - v[i0]);
                 out.y[j] = y;
                 out.dy[j] = dy;
@@ -1974,6 +1965,8 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
                 out.curv_a[j] = samples[i0].curv_a + t * (samples[i1].curv_a - samples[i0].curv_a);
                 out.curv_bf[j] = lerp(&self.bf);
                 out.n_over_m[j] = lerp(&self.nm);
+                out.stiffness[j] = lerp(&self.kst);
+                out.a_tilde[j] = lerp(&self.at);
                 out.region[j] = r as u8;
                 // temporaries for the re-solve: store in h (z), pmax (zref), a (e) until solved
                 out.h[j] = lerp(&self.z) + lerp(&self.uz);
@@ -1984,24 +1977,7 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         }
         out.n_strips = j;
         out.n_regions = nr;
-        // Per-strip stiffness and Ã by interpolation; re-solve.
-        let mut i = 0usize;
-        for q in 0..j {
-            let y = out.y[q];
-            if q > 0 && out.y[q] < out.y[q - 1] {
-                i = 0;
-            }
-            while i + 2 < n && self.y[i + 1] < y {
-                i += 1;
-            }
-            let t = math::clamp(
-                (y - self.y[i]) / (self.y[i + 1] - self.y[i]),
-                T::ZERO,
-                T::ONE,
-            );
-            out.stiffness[q] = self.kst[i] + t * (self.kst[i + 1] - self.kst[i]);
-            out.a_tilde[q] = self.at[i] + t * (self.at[i + 1] - self.at[i]);
-        }
+        // Re-solve on the strips.
         let lc = {
             let (z, zref, e, dyv) = (&out.h, &out.pmax, &out.a, &out.dy);
             let kst = &out.stiffness;
@@ -2043,18 +2019,11 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
         Ok(())
     }
 
-    /// The last solve's local quantities at lateral position `y` (linear between samples,
-    /// clamped at the ends): (B_f, n/m, Ã, strip stiffness). `i` is the bracket search start
-    /// (samples ascending; pass 0 or the previous call's value for ascending `y`).
-    pub(crate) fn local_at(&self, y: T, i: &mut usize) -> (T, T, T, T) {
-        let n = self.n;
-        if n < 2 {
-            return (T::ZERO, T::ONE, T::ZERO, T::ZERO);
-        }
-        if *i + 1 >= n || self.y[*i] > y {
-            *i = 0;
-        }
-        while *i + 2 < n && self.y[*i + 1] < y {
+    /// Interpolation bracket of lateral position `y` among the last solve's samples (n ≥ 2): the
+    /// samples (i0, i1 = i0 + 1) around it and the weight t of i1, clamped to [0, 1] at the ends.
+    /// The search runs forward from `i` (ascending `y` between calls).
+    fn bracket(&self, y: T, i: &mut usize) -> (usize, usize, T) {
+        while *i + 2 < self.n && self.y[*i + 1] < y {
             *i += 1;
         }
         let (i0, i1) = (*i, *i + 1);
@@ -2063,6 +2032,20 @@ impl<T: Real, const NS: usize, const NB: usize, const NR: usize> Stripes<T, NS, 
             T::ZERO,
             T::ONE,
         );
+        (i0, i1, t)
+    }
+
+    /// The last solve's local quantities at lateral position `y` (linear between samples,
+    /// clamped at the ends): (B_f, n/m, Ã, strip stiffness). `i` is the bracket search start
+    /// (samples ascending; pass 0 or the previous call's value for ascending `y`).
+    pub(crate) fn local_at(&self, y: T, i: &mut usize) -> (T, T, T, T) {
+        if self.n < 2 {
+            return (T::ZERO, T::ONE, T::ZERO, T::ZERO);
+        }
+        if *i + 1 >= self.n || self.y[*i] >= y {
+            *i = 0;
+        }
+        let (i0, i1, t) = self.bracket(y, i);
         let lerp = |v: &[T; NS]| v[i0] + t * (v[i1] - v[i0]);
         (
             lerp(&self.bf),
